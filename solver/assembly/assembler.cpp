@@ -1,0 +1,82 @@
+#include "assembly/assembler.hpp"
+
+#include <algorithm>
+
+#include "core/parallel.hpp"
+
+namespace kontakt::assembly {
+
+AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symmetric,
+                       int threads) {
+  AssemblyPlan plan;
+  plan.dofs = &dofs;
+  const ElementEquations eqs = element_equations(model, dofs);
+  plan.pattern = build_pattern(eqs, dofs.n_equations(), symmetric, threads);
+  plan.colours = colour_elements(eqs, dofs.n_equations());
+  return plan;
+}
+
+namespace {
+
+/// Adds one element's K and f into the reduced system through the dof expressions.
+void scatter_element(const model::Element& element, const DofMap& dofs,
+                     const SparsePattern& pattern, const VecX& prescribed, const MatX& K,
+                     const VecX& f, ReducedSystem& out) {
+  const int n_local = 3 * static_cast<int>(element.nodes.size());
+  auto dof_of = [&](int a) { return 3 * element.nodes[a / 3] + a % 3; };
+  for (int a = 0; a < n_local; ++a) {
+    const int da = dof_of(a);
+    for (auto ta = dofs.terms_begin(da); ta != dofs.terms_end(da); ++ta) {
+      if (ta->is_prescribed) continue;
+      const int row = ta->index;
+      out.rhs[row] += ta->coef * f[a];
+      for (int b = 0; b < n_local; ++b) {
+        const Real kab = K(a, b);
+        if (kab == 0) continue;
+        const int db = dof_of(b);
+        for (auto tb = dofs.terms_begin(db); tb != dofs.terms_end(db); ++tb) {
+          const Real v = ta->coef * tb->coef * kab;
+          if (tb->is_prescribed) {
+            out.rhs[row] -= v * prescribed[tb->index];
+            continue;
+          }
+          const int col = tb->index;
+          if (pattern.upper && row > col) continue;
+          out.values[pattern.find(row, col)] += v;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void assemble(const model::Model& model, const AssemblyPlan& plan,
+              const VecX& prescribed_values, const ElementKernel& kernel, int threads,
+              ReducedSystem& out) {
+  const DofMap& dofs = *plan.dofs;
+  out.values.assign(plan.pattern.nnz(), 0.0);
+  out.rhs = VecX::Zero(dofs.n_equations());
+  const auto& elements = model.mesh.elements;
+  for (const auto& colour : plan.colours) {
+    parallel_chunks(colour.size(), threads, [&](std::size_t begin, std::size_t end, int) {
+      MatX K;
+      VecX f;
+      for (std::size_t k = begin; k < end; ++k) {
+        const int e = colour[k];
+        kernel(e, K, f);
+        scatter_element(elements[e], dofs, plan.pattern, prescribed_values, K, f, out);
+      }
+    });
+  }
+}
+
+void add_nodal_forces(const DofMap& dofs, const VecX& f, VecX& rhs) {
+  for (int d = 0; d < dofs.n_dofs(); ++d) {
+    if (f[d] == 0) continue;
+    for (auto t = dofs.terms_begin(d); t != dofs.terms_end(d); ++t)
+      if (!t->is_prescribed) rhs[t->index] += t->coef * f[d];
+  }
+}
+
+}  // namespace kontakt::assembly

@@ -1,0 +1,41 @@
+// Scatter of element contributions into the reduced system T^T K T x = T^T (f - K g).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "assembly/dof_map.hpp"
+#include "assembly/sparse_pattern.hpp"
+#include "model/model.hpp"
+
+namespace kontakt::assembly {
+
+/// The reduced linear system in a pattern's storage.
+struct ReducedSystem {
+  std::vector<Real> values;  ///< one per pattern entry
+  VecX rhs;
+};
+
+/// Fills the element's stiffness K (3n x 3n) and load vector f (3n) for element e; called
+/// concurrently from several threads with distinct elements.
+using ElementKernel = std::function<void(int e, MatX& K, VecX& f)>;
+
+/// Everything assembly needs that stays fixed while the constraint structure holds.
+struct AssemblyPlan {
+  const DofMap* dofs = nullptr;
+  SparsePattern pattern;
+  std::vector<std::vector<int>> colours;  ///< elements sharing no equation
+};
+AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symmetric,
+                       int threads);
+
+/// Assembles stiffness and loads of every element; prescribed values enter the right-hand
+/// side as -K g. `out` is overwritten.
+void assemble(const model::Model& model, const AssemblyPlan& plan,
+              const VecX& prescribed_values, const ElementKernel& kernel, int threads,
+              ReducedSystem& out);
+
+/// rhs += T^T f for a nodal force vector f over all 3 * n_nodes dofs.
+void add_nodal_forces(const DofMap& dofs, const VecX& f, VecX& rhs);
+
+}  // namespace kontakt::assembly

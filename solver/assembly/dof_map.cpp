@@ -1,0 +1,162 @@
+#include "assembly/dof_map.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace kontakt::assembly {
+
+namespace {
+
+enum class Kind : char { Inactive, Free, Prescribed, Dependent };
+
+const char* component_name(int c) { return c == 0 ? "x" : c == 1 ? "y" : "z"; }
+
+/// Dofs of nodes that belong to at least one element: the others carry no stiffness.
+std::vector<char> attached_dofs(const model::Model& model) {
+  std::vector<char> attached(3 * static_cast<std::size_t>(model.n_nodes()), 0);
+  for (const auto& el : model.mesh.elements)
+    for (int n : el.nodes)
+      for (int c = 0; c < 3; ++c) attached[3 * n + c] = 1;
+  return attached;
+}
+
+}  // namespace
+
+DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries) {
+  const int n = 3 * model.n_nodes();
+  const std::vector<char> attached = attached_dofs(model);
+  std::vector<Kind> kind(n);
+  for (int d = 0; d < n; ++d) kind[d] = attached[d] ? Kind::Free : Kind::Inactive;
+
+  prescribed_slot_.assign(n, -1);
+  for (const auto& bc : boundaries) {
+    const int d = 3 * bc.node + bc.dof;
+    if (prescribed_slot_[d] >= 0) continue;  // the step's value list resolves duplicates
+    prescribed_slot_[d] = static_cast<int>(prescribed_dof_.size());
+    prescribed_dof_.push_back(d);
+    kind[d] = Kind::Prescribed;
+  }
+
+  // Dependent dofs: the first term of each equation, expressed by the remaining terms.
+  std::map<int, const model::Equation*> dependent_of;
+  for (const auto& eq : model.equations) {
+    const auto& lead = eq.terms.front();
+    const int d = 3 * lead.node + lead.dof;
+    if (kind[d] == Kind::Prescribed)
+      throw InputError(eq.where, "*EQUATION",
+                       "the dependent dof (first term, " + describe(model, d) +
+                           ") is also prescribed by *BOUNDARY");
+    if (dependent_of.count(d))
+      throw InputError(eq.where, "*EQUATION",
+                       "dof " + describe(model, d) + " is the dependent term of two equations");
+    dependent_of[d] = &eq;
+    kind[d] = Kind::Dependent;
+  }
+  for (const auto& eq : model.equations)
+    for (std::size_t k = 1; k < eq.terms.size(); ++k) {
+      const int d = 3 * eq.terms[k].node + eq.terms[k].dof;
+      if (kind[d] == Kind::Inactive) kind[d] = Kind::Free;  // tied in through the equation
+    }
+
+  equation_dof_.clear();
+  std::vector<int> eq_of(n, -1);
+  for (int d = 0; d < n; ++d)
+    if (kind[d] == Kind::Free) {
+      eq_of[d] = static_cast<int>(equation_dof_.size());
+      equation_dof_.push_back(d);
+    }
+  n_equations_ = static_cast<int>(equation_dof_.size());
+
+  // Expand each dof into terms over free equations and prescribed slots; dependent dofs are
+  // resolved recursively (chains of equations), with cycle detection.
+  std::vector<std::vector<DofTerm>> expr(n);
+  std::vector<char> state(n, 0);  // 0 unvisited, 1 in progress, 2 done
+  auto resolve = [&](auto&& self, int d) -> const std::vector<DofTerm>& {
+    if (state[d] == 2) return expr[d];
+    if (state[d] == 1)
+      throw InputError(dependent_of.at(d)->where, "*EQUATION",
+                       "equations form a cycle through " + describe(model, d));
+    state[d] = 1;
+    std::vector<DofTerm> out;
+    switch (kind[d]) {
+      case Kind::Inactive: break;
+      case Kind::Free: out.push_back({eq_of[d], 1.0, false}); break;
+      case Kind::Prescribed: out.push_back({prescribed_slot_[d], 1.0, true}); break;
+      case Kind::Dependent: {
+        const auto& eq = *dependent_of.at(d);
+        const Real lead = eq.terms.front().coef;
+        if (lead == 0)
+          throw InputError(eq.where, "*EQUATION", "the first coefficient must not be zero");
+        for (std::size_t k = 1; k < eq.terms.size(); ++k) {
+          const int other = 3 * eq.terms[k].node + eq.terms[k].dof;
+          for (const DofTerm& t : self(self, other))
+            out.push_back({t.index, -eq.terms[k].coef / lead * t.coef, t.is_prescribed});
+        }
+        break;
+      }
+    }
+    // Merge repeated references to the same unknown.
+    std::sort(out.begin(), out.end(), [](const DofTerm& a, const DofTerm& b) {
+      return std::tie(a.is_prescribed, a.index) < std::tie(b.is_prescribed, b.index);
+    });
+    std::vector<DofTerm> merged;
+    for (const DofTerm& t : out) {
+      if (!merged.empty() && merged.back().index == t.index &&
+          merged.back().is_prescribed == t.is_prescribed)
+        merged.back().coef += t.coef;
+      else
+        merged.push_back(t);
+    }
+    expr[d] = std::move(merged);
+    state[d] = 2;
+    return expr[d];
+  };
+
+  start_.assign(n + 1, 0);
+  for (int d = 0; d < n; ++d) {
+    const auto& e = resolve(resolve, d);
+    start_[d + 1] = start_[d] + static_cast<int>(e.size());
+  }
+  terms_.reserve(start_[n]);
+  for (int d = 0; d < n; ++d) terms_.insert(terms_.end(), expr[d].begin(), expr[d].end());
+}
+
+bool DofMap::is_free(int dof) const {
+  return start_[dof + 1] - start_[dof] == 1 && !terms_[start_[dof]].is_prescribed &&
+         equation_dof_[terms_[start_[dof]].index] == dof;
+}
+
+Real DofMap::offset(int dof, const VecX& prescribed_values) const {
+  Real g = 0;
+  for (auto t = terms_begin(dof); t != terms_end(dof); ++t)
+    if (t->is_prescribed) g += t->coef * prescribed_values[t->index];
+  return g;
+}
+
+VecX DofMap::expand(const VecX& x, const VecX& prescribed_values) const {
+  VecX u = VecX::Zero(n_dofs());
+  for (int d = 0; d < n_dofs(); ++d) {
+    Real v = 0;
+    for (auto t = terms_begin(d); t != terms_end(d); ++t)
+      v += t->coef * (t->is_prescribed ? prescribed_values[t->index] : x[t->index]);
+    u[d] = v;
+  }
+  return u;
+}
+
+bool DofMap::same_structure(const DofMap& other) const {
+  if (start_ != other.start_ || terms_.size() != other.terms_.size()) return false;
+  for (std::size_t k = 0; k < terms_.size(); ++k)
+    if (terms_[k].index != other.terms_[k].index ||
+        terms_[k].is_prescribed != other.terms_[k].is_prescribed ||
+        terms_[k].coef != other.terms_[k].coef)
+      return false;
+  return true;
+}
+
+std::string DofMap::describe(const model::Model& model, int dof) const {
+  return "node " + std::to_string(model.mesh.node_ids[dof / 3]) + " dof " +
+         component_name(dof % 3);
+}
+
+}  // namespace kontakt::assembly

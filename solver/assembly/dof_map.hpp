@@ -1,0 +1,68 @@
+// DofMap: how every nodal degree of freedom follows from the unknowns of the reduced system.
+//
+// Each global dof d = 3*node + component is one of
+//   free        u_d = x[eq]                                 (an unknown of the reduced system)
+//   prescribed  u_d = value of a *BOUNDARY                   (eliminated, reaction reported)
+//   dependent   u_d = sum_k c_k * (free or prescribed dof)   (*EQUATION, first term dependent)
+//   inactive    u_d = 0                                      (node not attached to any element)
+// so u = T x + g, with T and g stored row by row. Element matrices are reduced as T^T K T.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "model/model.hpp"
+
+namespace kontakt::assembly {
+
+struct DofTerm {
+  int index;  ///< free equation (is_prescribed == false) or prescribed slot
+  Real coef;
+  bool is_prescribed;
+};
+
+class DofMap {
+ public:
+  /// Builds the map for one step's constraints. Throws InputError for contradictory
+  /// constraints (a dof prescribed twice with different values is not an error: the last
+  /// wins, as in ccx; a dependent dof that is also prescribed, or a cyclic equation chain, is).
+  DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries);
+
+  int n_dofs() const { return static_cast<int>(start_.size()) - 1; }
+  int n_equations() const { return n_equations_; }
+  int n_prescribed() const { return static_cast<int>(prescribed_dof_.size()); }
+
+  /// Terms of u_d: a free dof has one term with coefficient 1; inactive dofs have none.
+  const DofTerm* terms_begin(int dof) const { return terms_.data() + start_[dof]; }
+  const DofTerm* terms_end(int dof) const { return terms_.data() + start_[dof + 1]; }
+  bool is_free(int dof) const;
+  bool is_prescribed(int dof) const { return prescribed_slot_[dof] >= 0; }
+  /// Global dof behind prescribed slot s, and the slot of a global dof (-1 if none).
+  int prescribed_dof(int slot) const { return prescribed_dof_[slot]; }
+  int prescribed_slot(int dof) const { return prescribed_slot_[dof]; }
+  /// Global dof of free equation eq.
+  int equation_dof(int eq) const { return equation_dof_[eq]; }
+
+  /// Full displacement vector u = T x + g for reduced solution x and prescribed values.
+  VecX expand(const VecX& x, const VecX& prescribed_values) const;
+  /// Value of u_d contributed by the prescribed values alone (g_d).
+  Real offset(int dof, const VecX& prescribed_values) const;
+
+  /// Signature of the constraint structure: equal signatures give equal sparsity patterns.
+  const std::vector<int>& structure() const { return start_; }
+  bool same_structure(const DofMap& other) const;
+
+  /// "node 17 dof x" style description of a global dof for messages.
+  std::string describe(const model::Model& model, int dof) const;
+
+ private:
+  std::vector<int> start_;
+  std::vector<DofTerm> terms_;
+  std::vector<int> prescribed_slot_;
+  std::vector<int> prescribed_dof_;
+  std::vector<int> equation_dof_;
+  int n_equations_ = 0;
+};
+
+}  // namespace kontakt::assembly

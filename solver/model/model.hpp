@@ -1,0 +1,177 @@
+// Model: the validated, immutable description of a deck that the analysis runs.
+// Built only by inp::read_deck; everything is in internal (0-based, dense) indices,
+// with the deck's labels kept for output.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/types.hpp"
+#include "element/element_type.hpp"
+
+namespace kontakt::model {
+
+struct Element {
+  int id = 0;                     ///< label in the deck
+  element::ElementType type{};
+  std::vector<int> nodes;         ///< internal node indices, ccx local order
+  int section = -1;               ///< index into Model::sections
+};
+
+struct Mesh {
+  std::vector<int> node_ids;      ///< deck label of each internal node
+  MatX3 coords;                   ///< one row per internal node
+  std::unordered_map<int, int> node_index;     ///< label -> internal index
+  std::vector<Element> elements;
+  std::unordered_map<int, int> element_index;  ///< label -> internal index
+};
+
+/// Sets are stored sorted by deck label and free of duplicates (the order ccx prints them in).
+struct NodeSet {
+  std::string name;               ///< upper case, as ccx prints it
+  std::vector<int> nodes;         ///< internal indices
+};
+struct ElementSet {
+  std::string name;
+  std::vector<int> elements;      ///< internal indices
+};
+
+struct ElementFace {
+  int element = 0;                ///< internal element index
+  int face = 0;                   ///< 1-based ccx face number
+};
+struct Surface {
+  enum class Kind { ElementFaces, Nodes };
+  std::string name;
+  Kind kind = Kind::ElementFaces;
+  std::vector<ElementFace> faces;  ///< Kind::ElementFaces
+  std::vector<int> nodes;          ///< Kind::Nodes, internal indices
+  SourceLoc where;
+};
+
+struct Material {
+  std::string name;
+  Real young = 0, poisson = 0;    ///< *ELASTIC, isotropic
+  std::optional<Real> density;    ///< *DENSITY
+  std::optional<Real> expansion;  ///< *EXPANSION, isotropic secant coefficient
+  Real expansion_zero = 0;        ///< *EXPANSION, ZERO= reference temperature
+  SourceLoc where;
+};
+
+struct SolidSection {
+  std::string elset;
+  int material = -1;              ///< index into Model::materials
+  SourceLoc where;
+};
+
+struct Amplitude {
+  std::string name;
+  bool total_time = false;        ///< TIME=TOTAL TIME; otherwise step time
+  std::vector<std::pair<Real, Real>> points;  ///< (time, value), time ascending
+  /// Piecewise-linear value; constant beyond the table ends.
+  Real value_at(Real time) const;
+};
+
+/// One term of a linear multipoint constraint sum(coef * u[node][dof]) = 0.
+struct EquationTerm {
+  int node = 0;                   ///< internal index
+  int dof = 0;                    ///< 0, 1, 2 = x, y, z
+  Real coef = 0;
+};
+struct Equation {
+  std::vector<EquationTerm> terms;  ///< the first term's dof is the dependent one (ccx)
+  SourceLoc where;
+};
+
+/// A prescribed displacement u[node][dof] = value * amplitude(t). Fixed = value 0.
+struct Boundary {
+  int node = 0;
+  int dof = 0;
+  Real value = 0;
+  int amplitude = -1;             ///< index into Model::amplitudes, -1 = ramp/step default
+};
+struct ConcentratedLoad {
+  int node = 0;
+  int dof = 0;
+  Real value = 0;
+  int amplitude = -1;
+};
+/// Uniform pressure on an element face (*DLOAD Pn); positive pushes into the face.
+struct PressureLoad {
+  ElementFace face;
+  Real value = 0;
+  int amplitude = -1;
+};
+
+enum class Totals { No, Yes, Only };
+
+/// *NODE PRINT / *EL PRINT request (printed to .dat).
+struct PrintRequest {
+  enum class Kind { Node, Element };
+  Kind kind = Kind::Node;
+  std::string set;                ///< NSET= / ELSET= name (upper case)
+  std::vector<std::string> variables;  ///< upper case: U, RF, S, E, EVOL, ENER, ...
+  Totals totals = Totals::No;
+  bool global = true;             ///< GLOBAL=YES (no transforms supported anyway)
+  int frequency = 1;
+  SourceLoc where;
+};
+
+/// *NODE FILE / *EL FILE / *NODE OUTPUT / *ELEMENT OUTPUT: fields written to the results file.
+struct FileRequest {
+  std::vector<std::string> variables;
+  int frequency = 1;
+};
+
+struct StaticProcedure {
+  Real initial_increment = 1;
+  Real period = 1;
+  std::optional<Real> min_increment;
+  std::optional<Real> max_increment;
+  bool direct = false;
+  bool data_line_given = false;
+};
+
+/// One *STEP. Loads and constraints are the *effective* set for the step: the reader has
+/// already applied carry-over from earlier steps, OP=NEW and model-level definitions.
+struct Step {
+  SourceLoc where;
+  bool nlgeom = false;
+  int max_increments = 100;       ///< *STEP, INC=
+  StaticProcedure procedure;
+  std::vector<Boundary> boundaries;
+  std::vector<ConcentratedLoad> cloads;
+  std::vector<PressureLoad> pressures;
+  /// Nodal temperatures at the end of the step (*TEMPERATURE), size n_nodes, or empty when
+  /// the step has no temperature field (then the initial temperatures apply).
+  VecX temperatures;
+  std::vector<PrintRequest> prints;
+  std::vector<FileRequest> node_files, element_files;
+};
+
+struct Model {
+  std::string heading;
+  std::string source_file;        ///< the deck that was read
+  Mesh mesh;
+  std::map<std::string, NodeSet> node_sets;       ///< key: upper-case name
+  std::map<std::string, ElementSet> element_sets;
+  std::map<std::string, Surface> surfaces;
+  std::vector<Material> materials;
+  std::vector<SolidSection> sections;
+  std::vector<Amplitude> amplitudes;
+  std::vector<Equation> equations;
+  /// Initial nodal temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE), size n_nodes, or
+  /// empty when none were given.
+  VecX initial_temperatures;
+  std::vector<Step> steps;
+  std::vector<std::string> warnings;  ///< "file:line: keyword: message" for accepted oddities
+
+  int n_nodes() const { return static_cast<int>(mesh.node_ids.size()); }
+  int n_elements() const { return static_cast<int>(mesh.elements.size()); }
+};
+
+}  // namespace kontakt::model

@@ -1,0 +1,95 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "linsolve/linear_solver.hpp"
+
+using namespace kontakt;
+
+namespace {
+
+/// Pattern and values of a dense matrix (full or upper storage).
+assembly::SparsePattern dense_pattern(const MatX& A, bool upper, std::vector<Real>& values) {
+  assembly::SparsePattern p;
+  p.n = static_cast<int>(A.rows());
+  p.upper = upper;
+  p.col_start.push_back(0);
+  values.clear();
+  for (int j = 0; j < p.n; ++j) {
+    for (int i = 0; i < (upper ? j + 1 : p.n); ++i)
+      if (A(i, j) != 0 || i == j) {
+        p.row_index.push_back(i);
+        values.push_back(A(i, j));
+      }
+    p.col_start.push_back(static_cast<Index>(p.row_index.size()));
+  }
+  return p;
+}
+
+MatX spd_matrix(int n) {
+  std::srand(7);
+  MatX R = MatX::Random(n, n);
+  return R * R.transpose() + n * MatX::Identity(n, n);
+}
+
+}  // namespace
+
+TEST(LinearSolvers, CholmodAndUmfpackSolveSpdSystem) {
+  const MatX A = spd_matrix(40);
+  const VecX b = VecX::Random(40);
+  const VecX x_ref = A.ldlt().solve(b);
+  for (bool use_cholmod : {true, false}) {
+    std::vector<Real> values;
+    const auto p = dense_pattern(A, use_cholmod, values);
+    auto solver = use_cholmod ? linsolve::make_cholmod_solver() : linsolve::make_umfpack_solver();
+    solver->analyze(p);
+    solver->factorize(values);
+    EXPECT_LT((solver->solve(b) - x_ref).norm(), 1e-10 * x_ref.norm()) << solver->name();
+    // Refactorise with new values in the same pattern: the symbolic analysis is reused.
+    for (auto& v : values) v *= 2;
+    solver->factorize(values);
+    EXPECT_LT((solver->solve(b) - 0.5 * x_ref).norm(), 1e-10 * x_ref.norm()) << solver->name();
+  }
+}
+
+TEST(LinearSolvers, UmfpackSolvesUnsymmetricSystem) {
+  std::srand(3);
+  MatX A = MatX::Random(30, 30) + 30 * MatX::Identity(30, 30);
+  const VecX b = VecX::Random(30);
+  std::vector<Real> values;
+  const auto p = dense_pattern(A, false, values);
+  auto solver = linsolve::make_umfpack_solver();
+  solver->analyze(p);
+  solver->factorize(values);
+  EXPECT_LT((A * solver->solve(b) - b).norm(), 1e-10 * b.norm());
+}
+
+TEST(LinearSolvers, CholmodNamesTheEquationOfAZeroPivot) {
+  MatX A = spd_matrix(10);
+  A.row(6).setZero();
+  A.col(6).setZero();
+  std::vector<Real> values;
+  const auto p = dense_pattern(A, true, values);
+  auto solver = linsolve::make_cholmod_solver();
+  solver->analyze(p);
+  try {
+    solver->factorize(values);
+    FAIL() << "singular matrix accepted";
+  } catch (const linsolve::SingularMatrix& e) {
+    EXPECT_EQ(e.equation(), 6);
+  }
+}
+
+TEST(LinearSolvers, BothDetectARigidBodyModeNumerically) {
+  // Two springs in series with no support: K has the constant vector in its null space, but
+  // round-off may leave a tiny positive pivot instead of an exact zero.
+  MatX A(3, 3);
+  A << 1e6, -1e6, 0, -1e6, 1e6 + 3e5, -3e5, 0, -3e5, 3e5;
+  for (bool use_cholmod : {true, false}) {
+    std::vector<Real> values;
+    const auto p = dense_pattern(A, use_cholmod, values);
+    auto solver = use_cholmod ? linsolve::make_cholmod_solver() : linsolve::make_umfpack_solver();
+    solver->analyze(p);
+    EXPECT_THROW(solver->factorize(values), linsolve::SingularMatrix) << solver->name();
+  }
+}
