@@ -116,7 +116,7 @@ struct PrintRequest {
   std::string set;                ///< NSET= / ELSET= name (upper case)
   std::vector<std::string> variables;  ///< upper case: U, RF, S, E, EVOL, ENER, ...
   Totals totals = Totals::No;
-  bool global = true;             ///< GLOBAL=YES (no transforms supported anyway)
+  bool global = false;            ///< GLOBAL= (ccx default NO for prints; no transforms yet)
   int frequency = 1;
   SourceLoc where;
 };

@@ -1,0 +1,48 @@
+#include "analysis/events.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace kontakt::analysis {
+
+namespace {
+const char* kind_name(Event::Kind kind) {
+  switch (kind) {
+    case Event::Kind::Step: return "step";
+    case Event::Kind::Increment: return "increment";
+    case Event::Kind::Iteration: return "iteration";
+    case Event::Kind::Cutback: return "cutback";
+    case Event::Kind::Output: return "output";
+    case Event::Kind::Done: return "done";
+    case Event::Kind::Error: return "error";
+  }
+  return "unknown";
+}
+}  // namespace
+
+std::string to_json_line(const Event& e) {
+  nlohmann::json j;
+  j["event"] = kind_name(e.kind);
+  if (e.step > 0) j["step"] = e.step;
+  if (e.increment > 0) j["increment"] = e.increment;
+  if (e.attempt > 0) j["attempt"] = e.attempt;
+  if (e.iteration > 0) j["iteration"] = e.iteration;
+  if (e.kind == Event::Kind::Increment || e.kind == Event::Kind::Iteration ||
+      e.kind == Event::Kind::Output) {
+    j["step_time"] = e.step_time;
+    j["total_time"] = e.total_time;
+    j["dt"] = e.dt;
+  }
+  if (e.residual >= 0) j["residual"] = e.residual;
+  if (e.correction >= 0) j["correction"] = e.correction;
+  if (!e.status.empty()) j["status"] = e.status;
+  if (!e.message.empty()) j["message"] = e.message;
+  if (e.kind == Event::Kind::Done) {
+    j["summary"] = {{"iterations", e.iterations},
+                    {"max_displacement", e.max_displacement},
+                    {"max_mises", e.max_mises}};
+  }
+  j["wall_time"] = e.wall_time;
+  return j.dump();
+}
+
+}  // namespace kontakt::analysis

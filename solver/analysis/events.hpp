@@ -1,0 +1,34 @@
+// Progress events of a run: what the JSONL log, the progress line and (later) the daemon see.
+#pragma once
+
+#include <string>
+
+#include "core/types.hpp"
+
+namespace kontakt::analysis {
+
+/// One event; fields that do not apply to a kind stay at their defaults and are not written.
+struct Event {
+  enum class Kind { Step, Increment, Iteration, Cutback, Output, Done, Error };
+  Kind kind = Kind::Step;
+  int step = 0, increment = 0, attempt = 0, iteration = 0;
+  Real step_time = 0, total_time = 0, dt = 0;
+  Real residual = -1, correction = -1;  ///< ccx-style ratios in %, -1 when not measured
+  Real wall_time = 0;                   ///< seconds since the run started
+  std::string status{};                 ///< Done: converged | not_converged | input_error | error
+  std::string message{};                ///< Error and Done: human-readable text
+  // Done summary
+  int iterations = 0;
+  Real max_displacement = 0, max_mises = 0;
+};
+
+class EventSink {
+ public:
+  virtual ~EventSink() = default;
+  virtual void on_event(const Event& event) = 0;
+};
+
+/// Serialises an event as one JSON object (no trailing newline).
+std::string to_json_line(const Event& event);
+
+}  // namespace kontakt::analysis

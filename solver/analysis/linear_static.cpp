@@ -1,0 +1,281 @@
+// Linear static driver. Per step:
+//   1. constraints -> DofMap; a new pattern and symbolic analysis only if their layout changed
+//   2. assemble K and the thermal loads element by element, add *CLOAD and *DLOAD forces
+//   3. factorise (skipped when K and the constraint layout equal the previous step's) and solve
+//   4. recover strains, stresses and nodal forces, and hand the frame to the writers
+#include "analysis/linear_static.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "analysis/support_check.hpp"
+#include "assembly/assembler.hpp"
+#include "core/parallel.hpp"
+#include "element/solid_linear.hpp"
+#include "linsolve/linear_solver.hpp"
+
+namespace kontakt::analysis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+MatX3 element_coords(const model::Model& model, const model::Element& el) {
+  MatX3 X(el.nodes.size(), 3);
+  for (std::size_t a = 0; a < el.nodes.size(); ++a) X.row(a) = model.mesh.coords.row(el.nodes[a]);
+  return X;
+}
+
+element::LinearElastic element_material(const model::Model& model, const model::Element& el) {
+  const auto& mat = model.materials[model.sections[el.section].material];
+  return {mat.young, mat.poisson, mat.expansion.value_or(0.0)};
+}
+
+/// Temperature change from the initial state at every node for this step (zero if none).
+VecX temperature_change(const model::Model& model, const model::Step& step) {
+  const int n = model.n_nodes();
+  if (step.temperatures.size() == 0) return VecX::Zero(n);
+  VecX initial = model.initial_temperatures.size() ? model.initial_temperatures : VecX::Zero(n);
+  return step.temperatures - initial;
+}
+
+/// Runs an element kernel; a failure inside it (e.g. an inverted element) names the element.
+template <class Fn>
+void naming_element(const model::Element& el, Fn&& fn) {
+  try {
+    fn();
+  } catch (const SolverError& e) {
+    throw SolverError("element " + std::to_string(el.id) + " (" +
+                      std::string(element::traits(el.type).name) + "): " + e.what());
+  }
+}
+
+VecX element_values(const model::Element& el, const VecX& nodal) {
+  VecX v(el.nodes.size());
+  for (std::size_t a = 0; a < el.nodes.size(); ++a) v[a] = nodal[el.nodes[a]];
+  return v;
+}
+
+/// Amplitude factor at the end of a step of length `period` that ends at `total_time`.
+Real amplitude_at_end(const model::Model& model, int amplitude, Real period, Real total_time) {
+  if (amplitude < 0) return 1.0;
+  const auto& amp = model.amplitudes[amplitude];
+  return amp.value_at(amp.total_time ? total_time : period);
+}
+
+/// External nodal forces of the step's concentrated and pressure loads (3 * n_nodes).
+VecX external_forces(const model::Model& model, const model::Step& step, Real period,
+                     Real total_time) {
+  VecX f = VecX::Zero(3 * model.n_nodes());
+  for (const auto& load : step.cloads)
+    f[3 * load.node + load.dof] +=
+        load.value * amplitude_at_end(model, load.amplitude, period, total_time);
+  for (const auto& load : step.pressures) {
+    const auto& el = model.mesh.elements[load.face.element];
+    VecX fe;
+    element::pressure_load(el.type, load.face.face, element_coords(model, el),
+                           load.value * amplitude_at_end(model, load.amplitude, period, total_time),
+                           fe);
+    for (std::size_t a = 0; a < el.nodes.size(); ++a)
+      for (int c = 0; c < 3; ++c) f[3 * el.nodes[a] + c] += fe[3 * a + c];
+  }
+  return f;
+}
+
+VecX prescribed_values(const model::Model& model, const model::Step& step,
+                       const assembly::DofMap& dofs, Real period, Real total_time) {
+  VecX g = VecX::Zero(dofs.n_prescribed());
+  for (const auto& bc : step.boundaries)  // later entries win, as in ccx
+    g[dofs.prescribed_slot(3 * bc.node + bc.dof)] =
+        bc.value * amplitude_at_end(model, bc.amplitude, period, total_time);
+  return g;
+}
+
+/// Strains, stresses, energies and nodal forces for the full displacement vector u.
+output::Frame recover_frame(const model::Model& model, const VecX& u, const VecX& dT,
+                            int threads) {
+  const auto& elements = model.mesh.elements;
+  const int n_el = model.n_elements(), n_nodes = model.n_nodes();
+  output::Frame frame;
+  frame.U = Eigen::Map<const MatX3>(u.data(), n_nodes, 3);
+  frame.ip_offset.assign(n_el + 1, 0);
+  for (int e = 0; e < n_el; ++e)
+    frame.ip_offset[e + 1] = frame.ip_offset[e] + element::traits(elements[e].type).n_ip;
+  const Index n_ip = frame.ip_offset.back();
+  frame.S.resize(n_ip, 6);
+  frame.E.resize(n_ip, 6);
+  frame.ENER.resize(n_ip);
+  frame.ip_volume.resize(n_ip);
+  frame.EVOL.resize(n_el);
+  std::vector<VecX> internal_force(n_el);
+  std::vector<MatX> S_node(n_el), E_node(n_el);
+
+  parallel_chunks(n_el, threads, [&](std::size_t begin, std::size_t end, int) {
+    element::IpResults r;
+    for (std::size_t e = begin; e < end; ++e) {
+      const auto& el = elements[e];
+      const MatX3 X = element_coords(model, el);
+      MatX3 ue(el.nodes.size(), 3);
+      for (std::size_t a = 0; a < el.nodes.size(); ++a) ue.row(a) = frame.U.row(el.nodes[a]);
+      naming_element(el, [&] {
+        element::recover(el.type, X, element_material(model, el), ue, element_values(el, dT), r);
+      });
+      const Index first = frame.ip_offset[e], count = frame.ip_offset[e + 1] - first;
+      frame.S.middleRows(first, count) = r.stress;
+      frame.E.middleRows(first, count) = r.strain;
+      frame.ENER.segment(first, count) = r.energy_density;
+      frame.ip_volume.segment(first, count) = element::ip_volumes(el.type, X);
+      frame.EVOL[e] = r.volume;
+      internal_force[e] = std::move(r.internal_force);
+      const MatX& to_nodes = element::ip_to_node_extrapolation(el.type);
+      S_node[e] = to_nodes * r.stress;
+      E_node[e] = to_nodes * r.strain;
+    }
+  });
+
+  // Nodal sums are serial: cheap next to the element work, and free of write conflicts.
+  frame.RF = MatX3::Zero(n_nodes, 3);
+  frame.S_nodal = MatX6::Zero(n_nodes, 6);
+  frame.E_nodal = MatX6::Zero(n_nodes, 6);
+  VecX count = VecX::Zero(n_nodes);
+  for (int e = 0; e < n_el; ++e) {
+    const auto& nodes = elements[e].nodes;
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      for (int c = 0; c < 3; ++c) frame.RF(nodes[a], c) += internal_force[e][3 * a + c];
+      frame.S_nodal.row(nodes[a]) += S_node[e].row(a);
+      frame.E_nodal.row(nodes[a]) += E_node[e].row(a);
+      count[nodes[a]] += 1;
+    }
+  }
+  for (int n = 0; n < n_nodes; ++n)
+    if (count[n] > 0) {
+      frame.S_nodal.row(n) /= count[n];
+      frame.E_nodal.row(n) /= count[n];
+    }
+  return frame;
+}
+
+Real von_mises(const Eigen::Ref<const Eigen::Matrix<Real, 1, 6>>& s) {
+  const Real a = s[0] - s[1], b = s[1] - s[2], c = s[2] - s[0];
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+/// Rejects what a linear analysis cannot represent, naming the step.
+void require_linear(const model::Model& model) {
+  for (const auto& step : model.steps)
+    if (step.nlgeom)
+      throw InputError(step.where, "*STEP",
+                       "NLGEOM (geometric nonlinearity) is not supported yet");
+  if (model.steps.empty())
+    throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
+}
+
+/// A load on a node that no element or equation reaches would silently vanish: refuse it.
+void require_loads_reach_elements(const model::Model& model, const assembly::DofMap& dofs,
+                                  const VecX& f) {
+  for (int d = 0; d < dofs.n_dofs(); ++d)
+    if (f[d] != 0 && dofs.terms_begin(d) == dofs.terms_end(d))
+      throw SolverError("a load acts on " + dofs.describe(model, d) +
+                        ", which belongs to no element: the load would have no effect");
+}
+
+/// Names the dof behind a singular pivot, if the solver could tell which.
+[[noreturn]] void rethrow_singular(const model::Model& model, const assembly::DofMap& dofs,
+                                   const linsolve::SingularMatrix& e) {
+  std::string msg = e.what();
+  if (e.equation() >= 0)
+    msg += " at " + dofs.describe(model, dofs.equation_dof(e.equation())) +
+           ": it is not held by any element stiffness or boundary condition";
+  else
+    msg += ": the model has an unconstrained rigid-body mode or a mechanism";
+  throw SolverError(msg);
+}
+
+}  // namespace
+
+void run_linear_static(const model::Model& model, const RunOptions& options, FrameSink& frames,
+                       EventSink& events) {
+  require_linear(model);
+  const int threads = resolve_threads(options.threads);
+  const auto t0 = Clock::now();
+  auto wall = [&] { return std::chrono::duration<Real>(Clock::now() - t0).count(); };
+
+  // Reused across steps while the constraint layout holds; K does not change in a linear model.
+  std::unique_ptr<assembly::DofMap> dofs;
+  std::unique_ptr<assembly::AssemblyPlan> plan;
+  auto solver = linsolve::make_cholmod_solver();
+  bool factorised = false;
+
+  Real total_time = 0, max_u = 0, max_mises = 0;
+  for (std::size_t s = 0; s < model.steps.size(); ++s) {
+    const model::Step& step = model.steps[s];
+    const int step_no = static_cast<int>(s) + 1;
+    events.on_event({.kind = Event::Kind::Step, .step = step_no, .wall_time = wall()});
+    const Real period = step.procedure.period;
+    total_time += period;
+
+    auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries);
+    if (!dofs || !dofs->same_structure(*step_dofs)) {
+      dofs = std::move(step_dofs);
+      check_bodies_supported(model, *dofs);
+      plan = std::make_unique<assembly::AssemblyPlan>(
+          assembly::make_plan(model, *dofs, /*symmetric=*/true, threads));
+      solver->analyze(plan->pattern);
+      factorised = false;
+    }
+
+    const VecX dT = temperature_change(model, step);
+    const bool has_thermal_strain = dT.size() > 0 && dT.cwiseAbs().maxCoeff() > 0;
+    const VecX g = prescribed_values(model, step, *dofs, period, total_time);
+    assembly::ReducedSystem system;
+    assembly::assemble(
+        model, *plan, g,
+        [&](int e, MatX& K, VecX& f) {
+          const auto& el = model.mesh.elements[e];
+          naming_element(el, [&] {
+            const MatX3 X = element_coords(model, el);
+            const auto mat = element_material(model, el);
+            element::linear_stiffness(el.type, X, mat, K);
+            if (has_thermal_strain && mat.expansion != 0)
+              element::thermal_load(el.type, X, mat, element_values(el, dT), f);
+            else
+              f = VecX::Zero(K.rows());
+          });
+        },
+        threads, system);
+    const VecX f_ext = external_forces(model, step, period, total_time);
+    require_loads_reach_elements(model, *dofs, f_ext);
+    assembly::add_nodal_forces(*dofs, f_ext, system.rhs);
+
+    try {
+      if (!factorised) solver->factorize(system.values);
+      factorised = true;
+    } catch (const linsolve::SingularMatrix& e) {
+      rethrow_singular(model, *dofs, e);
+    }
+    const VecX x = solver->solve(system.rhs);
+    if (!x.allFinite()) throw SolverError("the linear solve produced non-finite values");
+    const VecX u = dofs->expand(x, g);
+
+    output::Frame frame = recover_frame(model, u, dT, threads);
+    frame.step = step_no;
+    frame.increment = 1;
+    frame.step_time = period;
+    frame.total_time = total_time;
+    frame.is_step_end = true;
+    for (Index n = 0; n < frame.U.rows(); ++n) max_u = std::max(max_u, frame.U.row(n).norm());
+    for (Index k = 0; k < frame.S.rows(); ++k) max_mises = std::max(max_mises, von_mises(frame.S.row(k)));
+    events.on_event({.kind = Event::Kind::Increment, .step = step_no, .increment = 1,
+                     .attempt = 1, .iteration = 1, .step_time = period,
+                     .total_time = total_time, .dt = period, .wall_time = wall()});
+    frames.on_frame(step, frame);
+  }
+  Event done{.kind = Event::Kind::Done, .wall_time = wall(), .status = "converged"};
+  done.iterations = static_cast<int>(model.steps.size());
+  done.max_displacement = max_u;
+  done.max_mises = max_mises;
+  events.on_event(done);
+}
+
+}  // namespace kontakt::analysis

@@ -1,0 +1,54 @@
+#include "analysis/support_check.hpp"
+
+#include <array>
+#include <numeric>
+#include <string>
+
+namespace kontakt::analysis {
+
+namespace {
+
+struct DisjointSets {
+  std::vector<int> parent;
+  explicit DisjointSets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+void check_bodies_supported(const model::Model& model, const assembly::DofMap& dofs) {
+  const int n_nodes = model.n_nodes();
+  DisjointSets bodies(n_nodes);
+  std::vector<char> in_element(n_nodes, 0);
+  for (const auto& el : model.mesh.elements)
+    for (int node : el.nodes) {
+      bodies.join(el.nodes.front(), node);
+      in_element[node] = 1;
+    }
+  for (const auto& eq : model.equations)
+    for (const auto& term : eq.terms) bodies.join(eq.terms.front().node, term.node);
+
+  // A body is held in a direction when some dof in it is prescribed in that direction.
+  std::vector<std::array<char, 3>> held(n_nodes, {0, 0, 0});
+  for (int slot = 0; slot < dofs.n_prescribed(); ++slot) {
+    const int d = dofs.prescribed_dof(slot);
+    held[bodies.find(d / 3)][d % 3] = 1;
+  }
+  for (int node = 0; node < n_nodes; ++node) {
+    if (!in_element[node] || bodies.find(node) != node) continue;
+    const auto& h = held[node];
+    if (h[0] && h[1] && h[2]) continue;
+    std::string missing;
+    for (int c = 0; c < 3; ++c)
+      if (!h[c]) missing += std::string(missing.empty() ? "" : ", ") + "xyz"[c];
+    throw SolverError("the body containing node " + std::to_string(model.mesh.node_ids[node]) +
+                      " has no displacement boundary condition in " + missing +
+                      ": it can move as a rigid body (add *BOUNDARY constraints)");
+  }
+}
+
+}  // namespace kontakt::analysis

@@ -1,0 +1,98 @@
+// Everything the keyword handlers accumulate while walking the deck, before the Model is
+// validated and frozen. Sets and element connectivity are kept by deck label until the end
+// because ccx lets them mention labels defined further down.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "inp/inp_lexer.hpp"
+#include "model/model.hpp"
+
+namespace kontakt::inp {
+
+/// A set under construction: labels in the order given, each with the data line it came from.
+struct RawSet {
+  SourceLoc where;               ///< first card that defined it
+  std::vector<int> labels;
+  /// Index into DeckState::line_locs, parallel to labels; -(id + 1) marks a label produced by
+  /// GENERATE, which is skipped when it does not exist (ccx behaviour) instead of an error.
+  std::vector<int> line_ids;
+};
+
+struct RawFace {
+  int element_label = 0;
+  int face = 0;
+  int line_id = 0;
+};
+struct RawSurface {
+  model::Surface::Kind kind = model::Surface::Kind::ElementFaces;
+  std::vector<RawFace> faces;
+  std::vector<int> node_labels;
+  std::vector<int> line_ids;     ///< for node_labels
+  SourceLoc where;
+};
+
+struct RawSection {
+  std::string elset;
+  std::string material;
+  SourceLoc where;
+};
+
+using DofKey = std::pair<int, int>;  ///< (internal node, dof 0..2)
+using FaceKey = std::pair<int, int>; ///< (internal element, 1-based face)
+
+/// Loads and constraints in force, carried from step to step (ccx OP=MOD semantics).
+struct ActiveLoads {
+  std::map<DofKey, model::Boundary> boundaries;
+  std::map<DofKey, model::ConcentratedLoad> cloads;
+  std::map<FaceKey, model::PressureLoad> pressures;
+  std::map<int, Real> temperatures;  ///< internal node -> temperature
+  std::vector<model::PrintRequest> node_prints, element_prints;
+  std::vector<model::FileRequest> node_files, element_files;
+  int output_frequency = 1;  ///< ccx: the last FREQUENCY= given applies to all outputs
+  bool nlgeom = false;       ///< ccx: NLGEOM stays active in later steps
+};
+
+/// Which keywords already appeared in the open step: OP= acts on the first card only, and the
+/// first output request of a kind replaces the earlier ones.
+struct StepProgress {
+  model::Step step;
+  bool has_procedure = false;
+  std::set<std::string> seen;               ///< record keys seen in this step
+  std::set<DofKey> cloads_in_step;          ///< repeated CLOADs in one step add up
+  std::set<FaceKey> pressures_in_step;      ///< likewise for DLOADs
+};
+
+struct DeckState {
+  model::Model model;
+  std::vector<SourceLoc> line_locs;         ///< interned data-line locations
+  std::vector<Vec3> coords;
+  std::vector<std::vector<int>> element_node_labels;  ///< parallel to model.mesh.elements
+  std::vector<int> element_line_ids;
+  std::map<std::string, RawSet> node_sets, element_sets;
+  std::map<std::string, RawSurface> surfaces;
+  std::vector<RawSection> sections;
+  std::map<std::string, int> material_index;
+  std::map<std::string, int> amplitude_index;
+  std::map<int, Real> initial_temperatures;  ///< internal node -> value
+  int current_material = -1;                 ///< target of *ELASTIC, *DENSITY, ...
+  std::optional<StepProgress> open_step;
+  bool any_step_seen = false;
+  ActiveLoads active;
+
+  int intern(const SourceLoc& where) {
+    line_locs.push_back(where);
+    return static_cast<int>(line_locs.size()) - 1;
+  }
+  void warn(const SourceLoc& where, const std::string& keyword, const std::string& message) {
+    model.warnings.push_back(where.file + ":" + std::to_string(where.line) + ": " + keyword +
+                             ": " + message);
+  }
+};
+
+}  // namespace kontakt::inp

@@ -1,0 +1,46 @@
+// Handlers, one per keyword; grouped by file: kw_mesh, kw_material, kw_step, kw_loads,
+// kw_output. Each throws InputError for malformed input.
+#pragma once
+
+#include "inp/deck_state.hpp"
+
+namespace kontakt::inp {
+
+// kw_mesh.cpp
+void handle_heading(const Record&, DeckState&);
+void handle_node(const Record&, DeckState&);
+void handle_element(const Record&, DeckState&);
+void handle_nset(const Record&, DeckState&);
+void handle_elset(const Record&, DeckState&);
+void handle_surface(const Record&, DeckState&);
+
+// kw_material.cpp
+void handle_material(const Record&, DeckState&);
+void handle_elastic(const Record&, DeckState&);
+void handle_density(const Record&, DeckState&);
+void handle_expansion(const Record&, DeckState&);
+void handle_solid_section(const Record&, DeckState&);
+
+// kw_step.cpp
+void handle_step(const Record&, DeckState&);
+void handle_static(const Record&, DeckState&);
+void handle_end_step(const Record&, DeckState&);
+void handle_amplitude(const Record&, DeckState&);
+void handle_equation(const Record&, DeckState&);
+void handle_initial_conditions(const Record&, DeckState&);
+
+// kw_loads.cpp
+void handle_boundary(const Record&, DeckState&);
+void handle_cload(const Record&, DeckState&);
+void handle_dload(const Record&, DeckState&);
+void handle_temperature(const Record&, DeckState&);
+
+// kw_output.cpp
+void handle_node_print(const Record&, DeckState&);
+void handle_el_print(const Record&, DeckState&);
+void handle_node_file(const Record&, DeckState&);
+void handle_el_file(const Record&, DeckState&);
+void handle_output(const Record&, DeckState&);
+void handle_ignored_output(const Record&, DeckState&);
+
+}  // namespace kontakt::inp

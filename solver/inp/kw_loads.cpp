@@ -1,0 +1,157 @@
+// *BOUNDARY, *CLOAD, *DLOAD, *TEMPERATURE with ccx's OP=NEW/MOD carry-over rules. The
+// running state lives in DeckState::active; *END STEP snapshots it into the Step.
+#include "inp/element_names.hpp"
+#include "inp/keyword_handlers.hpp"
+#include "inp/model_builder.hpp"
+#include "inp/record_access.hpp"
+
+namespace kontakt::inp {
+
+namespace {
+
+/// Applies OP=: ccx honours it on the first card of its kind in a step only.
+/// Returns true when earlier definitions must be removed.
+bool op_new_requested(const Record& record, DeckState& state) {
+  const std::string op = name_value(record, "OP").value_or("MOD");
+  if (op != "NEW" && op != "MOD") fail(record, "OP=" + op + ": expected NEW or MOD");
+  if (!state.open_step) {
+    if (op == "NEW") fail(record, "OP=NEW is only meaningful within a step");
+    return false;
+  }
+  const bool first = state.open_step->seen.insert(record.key).second;
+  if (op == "NEW" && !first) {
+    state.warn(record.where, record.keyword,
+               "OP=NEW only acts on the first card of this kind in a step; ignored");
+  }
+  return op == "NEW" && first;
+}
+
+/// A structural translation dof, 1..3 in the deck, returned 0-based.
+int translation_dof(const Record& record, const DataLine& line, std::size_t field) {
+  const int dof = int_field(record, line, field);
+  if (dof < 1 || dof > 3) {
+    fail(record, line, "degree of freedom " + std::to_string(dof) +
+                           " is not supported (only 1..3, translations)");
+  }
+  return dof - 1;
+}
+
+void read_boundary_line(const Record& record, const DataLine& line, DeckState& state,
+                        int amplitude) {
+  require_field_count(record, line, 2, 4);
+  const int first = translation_dof(record, line, 1);
+  const bool has_last = line.fields.size() > 2 && !line.fields[2].empty();
+  const int last = has_last ? translation_dof(record, line, 2) : first;
+  if (last < first) fail(record, line, "last degree of freedom is smaller than the first");
+  const Real value = real_field_or(record, line, 3, 0);
+  for (int node : resolve_node_field(state, record, line, 0)) {
+    for (int dof = first; dof <= last; ++dof) {
+      // Same node and dof: the later definition replaces the earlier (ccx bounadd).
+      state.active.boundaries[{node, dof}] = model::Boundary{node, dof, value, amplitude};
+    }
+  }
+}
+
+/// Pressure faces named by "elem_or_elset, Pn" or "surface, P".
+std::vector<FaceKey> pressure_faces(const Record& record, const DataLine& line,
+                                    const DeckState& state) {
+  const std::string label = to_upper(line.fields[1]);
+  std::vector<FaceKey> faces;
+  if (label == "P") {
+    const auto surface = state.surfaces.find(remove_blanks(to_upper(line.fields[0])));
+    if (surface == state.surfaces.end() ||
+        surface->second.kind != model::Surface::Kind::ElementFaces) {
+      fail(record, line, "element face surface " + to_upper(line.fields[0]) + " is not defined");
+    }
+    for (const RawFace& f : surface->second.faces) {
+      const auto element = state.model.mesh.element_index.find(f.element_label);
+      if (element == state.model.mesh.element_index.end()) {
+        fail(record, line, "surface element " + std::to_string(f.element_label) +
+                               " is not defined");
+      }
+      faces.emplace_back(element->second, f.face);
+    }
+    return faces;
+  }
+  const std::optional<int> face = label.starts_with("P") && label.size() == 2
+                                      ? parse_int(label.substr(1))
+                                      : std::nullopt;
+  if (!face) fail(record, line, "load type " + label + " is not supported (only P1..P6)");
+  for (int element : resolve_element_field(state, record, line, 0)) {
+    faces.emplace_back(element, *face);
+  }
+  return faces;
+}
+
+void check_face_exists(const Record& record, const DataLine& line, const DeckState& state,
+                       const FaceKey& face) {
+  const model::Element& element = state.model.mesh.elements[static_cast<std::size_t>(face.first)];
+  const ElementName& name = element_name_of(element.type);
+  if (face.second < 1 || face.second > name.n_faces) {
+    fail(record, line, "element " + std::to_string(element.id) + " (" + std::string(name.name) +
+                           ") has no face " + std::to_string(face.second));
+  }
+}
+
+}  // namespace
+
+void handle_boundary(const Record& record, DeckState& state) {
+  check_params(record, {"OP", "AMPLITUDE"});
+  // ccx removes every earlier *BOUNDARY condition, model-level ones included.
+  if (op_new_requested(record, state)) state.active.boundaries.clear();
+  const int amplitude = amplitude_param(state, record);
+  for (const DataLine& line : record.lines) read_boundary_line(record, line, state, amplitude);
+}
+
+void handle_cload(const Record& record, DeckState& state) {
+  check_params(record, {"OP", "AMPLITUDE"});
+  if (op_new_requested(record, state)) state.active.cloads.clear();
+  const int amplitude = amplitude_param(state, record);
+  StepProgress& progress = *state.open_step;
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 3, 3);
+    const int dof = translation_dof(record, line, 1);
+    const Real value = real_field(record, line, 2);
+    for (int node : resolve_node_field(state, record, line, 0)) {
+      const DofKey key{node, dof};
+      model::ConcentratedLoad& load = state.active.cloads[key];
+      // ccx: within one step repeated forces add up; across steps they replace.
+      const bool again_in_step = !progress.cloads_in_step.insert(key).second;
+      load = model::ConcentratedLoad{node, dof, (again_in_step ? load.value : 0) + value,
+                                     amplitude};
+    }
+  }
+}
+
+void handle_dload(const Record& record, DeckState& state) {
+  check_params(record, {"OP", "AMPLITUDE"});
+  if (op_new_requested(record, state)) state.active.pressures.clear();
+  const int amplitude = amplitude_param(state, record);
+  StepProgress& progress = *state.open_step;
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 3, 3);
+    const Real value = real_field(record, line, 2);
+    for (const FaceKey& key : pressure_faces(record, line, state)) {
+      check_face_exists(record, line, state, key);
+      model::PressureLoad& load = state.active.pressures[key];
+      const bool again_in_step = !progress.pressures_in_step.insert(key).second;
+      load = model::PressureLoad{model::ElementFace{key.first, key.second},
+                                 (again_in_step ? load.value : 0) + value, amplitude};
+    }
+  }
+}
+
+void handle_temperature(const Record& record, DeckState& state) {
+  check_params(record, {"OP"});
+  // ccx: OP=NEW re-initialises the temperatures to the initial conditions.
+  if (op_new_requested(record, state)) state.active.temperatures.clear();
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 2, 2);
+    const Real value = real_field(record, line, 1);
+    for (int node : resolve_node_field(state, record, line, 0)) {
+      state.active.temperatures[node] = value;
+    }
+  }
+}
+
+}  // namespace kontakt::inp

@@ -1,0 +1,222 @@
+// *STEP, *STATIC, *END STEP, and the model-level *AMPLITUDE, *EQUATION, *INITIAL CONDITIONS.
+#include <algorithm>
+
+#include "inp/keyword_handlers.hpp"
+#include "inp/model_builder.hpp"
+#include "inp/record_access.hpp"
+
+namespace kontakt::inp {
+
+void handle_step(const Record& record, DeckState& state) {
+  if (has_param(record, "PERTURBATION")) fail(record, "PERTURBATION is not supported");
+  check_params(record, {"NLGEOM", "INC"});
+  if (!record.lines.empty()) fail(record, record.lines.front(), "unexpected data line");
+  StepProgress progress;
+  progress.step.where = record.where;
+  // ccx: once NLGEOM is selected it stays active in subsequent steps unless switched off.
+  progress.step.nlgeom = state.active.nlgeom;
+  if (const Param* nlgeom = find_param(record, "NLGEOM")) {
+    const std::string value = nlgeom->has_value ? to_upper(nlgeom->value) : "YES";
+    if (value != "YES" && value != "NO") fail(record, "NLGEOM=" + value + ": expected YES or NO");
+    progress.step.nlgeom = value == "YES";
+  }
+  if (const std::optional<int> inc = int_param(record, "INC")) {
+    if (*inc <= 0) fail(record, "INC= must be positive");
+    progress.step.max_increments = *inc;
+  }
+  state.open_step = std::move(progress);
+  state.any_step_seen = true;
+}
+
+void handle_static(const Record& record, DeckState& state) {
+  check_params(record, {"DIRECT", "SOLVER"});
+  StepProgress& progress = *state.open_step;
+  if (progress.has_procedure) fail(record, "the step already has a procedure");
+  progress.has_procedure = true;
+  if (has_param(record, "SOLVER")) {
+    state.warn(record.where, record.keyword, "SOLVER= ignored; Kontakt uses its own solver");
+  }
+  model::StaticProcedure& procedure = progress.step.procedure;
+  procedure.direct = has_param(record, "DIRECT");
+  require_line_count(record, 0, 1);
+  if (record.lines.empty()) {
+    state.warn(record.where, record.keyword, "no data line: initial increment and period 1");
+    return;
+  }
+  const DataLine& line = record.lines.front();
+  require_field_count(record, line, 1, 4);
+  procedure.data_line_given = true;
+  procedure.initial_increment = real_field_or(record, line, 0, 1);
+  procedure.period = real_field_or(record, line, 1, 1);
+  procedure.min_increment = optional_real_field(record, line, 2);
+  procedure.max_increment = optional_real_field(record, line, 3);
+  if (procedure.initial_increment <= 0) fail(record, line, "initial increment must be positive");
+  if (procedure.period <= 0) fail(record, line, "step period must be positive");
+}
+
+namespace {
+
+template <typename Map>
+auto values_of(const Map& map) {
+  std::vector<typename Map::mapped_type> out;
+  out.reserve(map.size());
+  for (const auto& entry : map) out.push_back(entry.second);
+  return out;
+}
+
+VecX step_temperatures(const DeckState& state) {
+  if (state.active.temperatures.empty()) return {};
+  VecX temps = VecX::Zero(state.model.n_nodes());
+  for (const auto& [node, value] : state.initial_temperatures) temps[node] = value;
+  for (const auto& [node, value] : state.active.temperatures) temps[node] = value;
+  return temps;
+}
+
+std::vector<model::PrintRequest> step_prints(const ActiveLoads& active) {
+  std::vector<model::PrintRequest> prints = active.node_prints;
+  prints.insert(prints.end(), active.element_prints.begin(), active.element_prints.end());
+  for (auto& p : prints) p.frequency = active.output_frequency;
+  return prints;
+}
+
+std::vector<model::FileRequest> with_frequency(std::vector<model::FileRequest> files,
+                                               int frequency) {
+  for (auto& f : files) f.frequency = frequency;
+  return files;
+}
+
+}  // namespace
+
+void handle_end_step(const Record& record, DeckState& state) {
+  check_params(record, {});
+  if (!record.lines.empty()) fail(record, record.lines.front(), "unexpected data line");
+  StepProgress& progress = *state.open_step;
+  if (!progress.has_procedure) {
+    throw InputError(progress.step.where, "*STEP", "step has no procedure (*STATIC)");
+  }
+  model::Step step = std::move(progress.step);
+  ActiveLoads& active = state.active;
+  step.boundaries = values_of(active.boundaries);
+  step.cloads = values_of(active.cloads);
+  step.pressures = values_of(active.pressures);
+  step.temperatures = step_temperatures(state);
+  step.prints = step_prints(active);
+  step.node_files = with_frequency(active.node_files, active.output_frequency);
+  step.element_files = with_frequency(active.element_files, active.output_frequency);
+  active.nlgeom = step.nlgeom;
+
+  const auto& amplitudes = state.model.amplitudes;
+  const Real period = step.procedure.period;
+  // ccx: at the end of a step a load's reference value is replaced by its actual value and
+  // kept constant afterwards, unless its amplitude runs on total time.
+  auto freeze = [&](auto& loads) {
+    for (auto& [key, load] : loads) {
+      if (load.amplitude < 0) continue;
+      const model::Amplitude& amp = amplitudes[static_cast<std::size_t>(load.amplitude)];
+      if (amp.total_time) continue;
+      load.value *= amp.value_at(period);
+      load.amplitude = -1;
+    }
+  };
+  freeze(active.boundaries);
+  freeze(active.cloads);
+  freeze(active.pressures);
+  state.model.steps.push_back(std::move(step));
+  state.open_step.reset();
+}
+
+void handle_amplitude(const Record& record, DeckState& state) {
+  check_params(record, {"NAME", "TIME", "DEFINITION", "VALUE"});
+  const std::string name = remove_blanks(to_upper(required_value(record, "NAME")));
+  const std::string time = name_value(record, "TIME").value_or("STEPTIME");
+  if (time != "STEPTIME" && time != "TOTALTIME") fail(record, "TIME=" + time + " is not valid");
+  if (name_value(record, "DEFINITION").value_or("TABULAR") != "TABULAR") {
+    fail(record, "only DEFINITION=TABULAR is supported");
+  }
+  if (name_value(record, "VALUE").value_or("RELATIVE") != "RELATIVE") {
+    fail(record, "only VALUE=RELATIVE is supported");
+  }
+  if (state.amplitude_index.contains(name)) fail(record, "amplitude " + name + " defined twice");
+  model::Amplitude amplitude;
+  amplitude.name = name;
+  amplitude.total_time = time == "TOTALTIME";
+  for (const DataLine& line : record.lines) {
+    if (line.fields.size() % 2 != 0 || line.fields.size() > 8) {
+      fail(record, line, "expected up to four (time, value) pairs per line");
+    }
+    for (std::size_t i = 0; i < line.fields.size(); i += 2) {
+      const Real t = real_field(record, line, i);
+      const Real a = real_field(record, line, i + 1);
+      if (!amplitude.points.empty() && t < amplitude.points.back().first) {
+        fail(record, line, "amplitude times must not decrease");
+      }
+      amplitude.points.emplace_back(t, a);
+    }
+  }
+  if (amplitude.points.empty()) fail(record, "amplitude has no data points");
+  state.amplitude_index[name] = static_cast<int>(state.model.amplitudes.size());
+  state.model.amplitudes.push_back(std::move(amplitude));
+}
+
+namespace {
+
+model::EquationTerm equation_term(const Record& record, const DataLine& line, std::size_t at,
+                                  const DeckState& state) {
+  if (!parse_int(line.fields[at]) && !parse_real(line.fields[at])) {
+    fail(record, line, "field " + std::to_string(at + 1) + " ('" + line.fields[at] +
+                           "'): node sets are not allowed, give node numbers");
+  }
+  const int node = node_index_of(state, record, line, int_field(record, line, at));
+  const int dof = int_field(record, line, at + 1);
+  if (dof < 1 || dof > 3) {
+    fail(record, line, "degree of freedom " + std::to_string(dof) + " is not supported (1..3)");
+  }
+  return model::EquationTerm{node, dof - 1, real_field(record, line, at + 2)};
+}
+
+}  // namespace
+
+void handle_equation(const Record& record, DeckState& state) {
+  check_params(record, {});
+  std::size_t i = 0;
+  while (i < record.lines.size()) {
+    const DataLine& head = record.lines[i++];
+    require_field_count(record, head, 1, 1);
+    const int n_terms = int_field(record, head, 0);
+    if (n_terms < 1) fail(record, head, "number of terms must be positive");
+    model::Equation equation;
+    equation.where = head.where;
+    while (static_cast<int>(equation.terms.size()) < n_terms) {
+      if (i >= record.lines.size()) fail(record, head, "equation ends before all its terms");
+      const DataLine& line = record.lines[i++];
+      const std::size_t remaining = static_cast<std::size_t>(n_terms) - equation.terms.size();
+      if (line.fields.size() % 3 != 0 || line.fields.size() > 12 ||
+          line.fields.size() / 3 > remaining) {
+        fail(record, line, "expected up to four (node, dof, coefficient) triplets, " +
+                               std::to_string(remaining) + " term(s) remaining");
+      }
+      for (std::size_t at = 0; at < line.fields.size(); at += 3) {
+        equation.terms.push_back(equation_term(record, line, at, state));
+      }
+    }
+    if (equation.terms.front().coef == 0) {
+      fail(record, head, "the dependent (first) term has a zero coefficient");
+    }
+    state.model.equations.push_back(std::move(equation));
+  }
+}
+
+void handle_initial_conditions(const Record& record, DeckState& state) {
+  check_params(record, {"TYPE"});
+  const std::string type = remove_blanks(to_upper(required_value(record, "TYPE")));
+  if (type != "TEMPERATURE") fail(record, "TYPE=" + type + " is not supported");
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 2, 2);
+    const Real value = real_field(record, line, 1);
+    for (int node : resolve_node_field(state, record, line, 0)) {
+      state.initial_temperatures[node] = value;
+    }
+  }
+}
+
+}  // namespace kontakt::inp

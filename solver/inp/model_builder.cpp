@@ -1,0 +1,232 @@
+#include "inp/model_builder.hpp"
+
+#include <algorithm>
+
+#include "inp/element_names.hpp"
+#include "inp/record_access.hpp"
+
+namespace kontakt::inp {
+
+namespace {
+
+/// Members of a raw set as indices via `index` (label -> internal), sorted by label.
+std::vector<int> set_members(const DeckState& state, const RawSet& set, const std::string& name,
+                             const std::unordered_map<int, int>& index, const char* what,
+                             const char* keyword) {
+  std::vector<std::pair<int, int>> labelled;  // (label, line id)
+  labelled.reserve(set.labels.size());
+  for (std::size_t i = 0; i < set.labels.size(); ++i) {
+    labelled.emplace_back(set.labels[i], set.line_ids[i]);
+  }
+  std::stable_sort(labelled.begin(), labelled.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<int> members;
+  members.reserve(labelled.size());
+  int previous = 0;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    const auto [label, line_id] = labelled[i];
+    if (i > 0 && label == previous) continue;
+    previous = label;
+    const auto found = index.find(label);
+    if (found == index.end() && line_id < 0) continue;  // gap in a GENERATE range
+    if (found == index.end()) {
+      throw InputError(state.line_locs[static_cast<std::size_t>(line_id)], keyword,
+                       std::string(what) + " " + std::to_string(label) + " of set " + name +
+                           " is not defined");
+    }
+    members.push_back(found->second);
+  }
+  return members;
+}
+
+}  // namespace
+
+std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
+                                  const std::string& name) {
+  return set_members(state, set, name, state.model.mesh.node_index, "node", "*NSET");
+}
+
+std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
+                                     const std::string& name) {
+  return set_members(state, set, name, state.model.mesh.element_index, "element", "*ELSET");
+}
+
+int node_index_of(const DeckState& state, const Record& record, const DataLine& line,
+                  int label) {
+  const auto found = state.model.mesh.node_index.find(label);
+  if (found == state.model.mesh.node_index.end()) {
+    fail(record, line, "node " + std::to_string(label) + " is not defined");
+  }
+  return found->second;
+}
+
+std::vector<int> resolve_node_field(const DeckState& state, const Record& record,
+                                    const DataLine& line, std::size_t field) {
+  if (field >= line.fields.size() || line.fields[field].empty()) {
+    fail(record, line, "field " + std::to_string(field + 1) + " (node or node set) is missing");
+  }
+  if (const std::optional<int> label = parse_int(line.fields[field])) {
+    return {node_index_of(state, record, line, *label)};
+  }
+  const std::string name = remove_blanks(to_upper(line.fields[field]));
+  const auto set = state.node_sets.find(name);
+  if (set == state.node_sets.end()) fail(record, line, "node set " + name + " is not defined");
+  return node_set_members(state, set->second, name);
+}
+
+std::vector<int> resolve_element_field(const DeckState& state, const Record& record,
+                                       const DataLine& line, std::size_t field) {
+  if (field >= line.fields.size() || line.fields[field].empty()) {
+    fail(record, line, "field " + std::to_string(field + 1) + " (element or set) is missing");
+  }
+  if (const std::optional<int> label = parse_int(line.fields[field])) {
+    const auto found = state.model.mesh.element_index.find(*label);
+    if (found == state.model.mesh.element_index.end()) {
+      fail(record, line, "element " + std::to_string(*label) + " is not defined");
+    }
+    return {found->second};
+  }
+  const std::string name = remove_blanks(to_upper(line.fields[field]));
+  const auto set = state.element_sets.find(name);
+  if (set == state.element_sets.end()) {
+    fail(record, line, "element set " + name + " is not defined");
+  }
+  return element_set_members(state, set->second, name);
+}
+
+int amplitude_param(const DeckState& state, const Record& record) {
+  const std::optional<std::string> name = name_value(record, "AMPLITUDE");
+  if (!name) return -1;
+  const auto found = state.amplitude_index.find(*name);
+  if (found == state.amplitude_index.end()) fail(record, "amplitude " + *name + " is not defined");
+  return found->second;
+}
+
+namespace {
+
+void resolve_connectivity(DeckState& state) {
+  model::Mesh& mesh = state.model.mesh;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    model::Element& element = mesh.elements[e];
+    element.nodes.reserve(state.element_node_labels[e].size());
+    for (int label : state.element_node_labels[e]) {
+      const auto found = mesh.node_index.find(label);
+      if (found == mesh.node_index.end()) {
+        throw InputError(state.line_locs[static_cast<std::size_t>(state.element_line_ids[e])],
+                         "*ELEMENT", "node " + std::to_string(label) + " of element " +
+                                         std::to_string(element.id) + " is not defined");
+      }
+      element.nodes.push_back(found->second);
+    }
+  }
+}
+
+void build_sets(DeckState& state) {
+  for (const auto& [name, set] : state.node_sets) {
+    state.model.node_sets[name] = model::NodeSet{name, node_set_members(state, set, name)};
+  }
+  for (const auto& [name, set] : state.element_sets) {
+    state.model.element_sets[name] =
+        model::ElementSet{name, element_set_members(state, set, name)};
+  }
+}
+
+model::Surface build_surface(const DeckState& state, const std::string& name,
+                             const RawSurface& raw) {
+  const model::Mesh& mesh = state.model.mesh;
+  model::Surface surface{name, raw.kind, {}, {}, raw.where};
+  for (const RawFace& face : raw.faces) {
+    const SourceLoc& where = state.line_locs[static_cast<std::size_t>(face.line_id)];
+    const auto found = mesh.element_index.find(face.element_label);
+    if (found == mesh.element_index.end()) {
+      throw InputError(where, "*SURFACE",
+                       "element " + std::to_string(face.element_label) + " is not defined");
+    }
+    const ElementName& type = element_name_of(mesh.elements[found->second].type);
+    if (face.face > type.n_faces) {
+      throw InputError(where, "*SURFACE", "element " + std::to_string(face.element_label) +
+                                              " (" + std::string(type.name) + ") has no face S" +
+                                              std::to_string(face.face));
+    }
+    surface.faces.push_back(model::ElementFace{found->second, face.face});
+  }
+  for (std::size_t i = 0; i < raw.node_labels.size(); ++i) {
+    const auto found = mesh.node_index.find(raw.node_labels[i]);
+    if (found == mesh.node_index.end()) {
+      throw InputError(state.line_locs[static_cast<std::size_t>(raw.line_ids[i])], "*SURFACE",
+                       "node " + std::to_string(raw.node_labels[i]) + " is not defined");
+    }
+    surface.nodes.push_back(found->second);
+  }
+  return surface;
+}
+
+void assign_sections(DeckState& state) {
+  model::Model& model = state.model;
+  for (const RawSection& raw : state.sections) {
+    const auto material = state.material_index.find(raw.material);
+    if (material == state.material_index.end()) {
+      throw InputError(raw.where, "*SOLID SECTION", "material " + raw.material +
+                                                        " is not defined");
+    }
+    const model::Material& mat = model.materials[static_cast<std::size_t>(material->second)];
+    if (mat.young <= 0) {
+      throw InputError(raw.where, "*SOLID SECTION",
+                       "material " + raw.material + " has no *ELASTIC constants");
+    }
+    const auto elset = model.element_sets.find(raw.elset);
+    if (elset == model.element_sets.end()) {
+      throw InputError(raw.where, "*SOLID SECTION", "element set " + raw.elset +
+                                                        " is not defined");
+    }
+    const int section = static_cast<int>(model.sections.size());
+    model.sections.push_back(model::SolidSection{raw.elset, material->second, raw.where});
+    for (int e : elset->second.elements) {
+      model::Element& element = model.mesh.elements[static_cast<std::size_t>(e)];
+      if (element.section >= 0) {
+        state.warn(raw.where, "*SOLID SECTION",
+                   "element " + std::to_string(element.id) + " already had a section; replaced");
+      }
+      element.section = section;
+    }
+  }
+}
+
+void require_sections(const DeckState& state) {
+  const auto& elements = state.model.mesh.elements;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (elements[e].section >= 0) continue;
+    throw InputError(state.line_locs[static_cast<std::size_t>(state.element_line_ids[e])],
+                     "*ELEMENT", "element " + std::to_string(elements[e].id) +
+                                     " has no *SOLID SECTION");
+  }
+}
+
+}  // namespace
+
+model::Model finish_model(DeckState& state) {
+  if (state.open_step) {
+    throw InputError(state.open_step->step.where, "*STEP", "missing *END STEP at end of deck");
+  }
+  model::Model& model = state.model;
+  model.mesh.coords.resize(static_cast<Eigen::Index>(state.coords.size()), 3);
+  for (std::size_t i = 0; i < state.coords.size(); ++i) {
+    model.mesh.coords.row(static_cast<Eigen::Index>(i)) = state.coords[i].transpose();
+  }
+  resolve_connectivity(state);
+  build_sets(state);
+  for (const auto& [name, raw] : state.surfaces) {
+    model.surfaces[name] = build_surface(state, name, raw);
+  }
+  assign_sections(state);
+  require_sections(state);
+  if (!state.initial_temperatures.empty()) {
+    model.initial_temperatures = VecX::Zero(model.n_nodes());
+    for (const auto& [node, value] : state.initial_temperatures) {
+      model.initial_temperatures[node] = value;
+    }
+  }
+  return std::move(model);
+}
+
+}  // namespace kontakt::inp

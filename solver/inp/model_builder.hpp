@@ -1,0 +1,36 @@
+// Resolving deck labels and set names to internal indices, and the final validation that
+// turns a DeckState into a Model.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "inp/deck_state.hpp"
+
+namespace kontakt::inp {
+
+/// Internal index of a node label; throws at `line` when the node does not exist.
+int node_index_of(const DeckState& state, const Record& record, const DataLine& line,
+                  int label);
+
+/// A data field naming a node label or a node set: internal indices (sets sorted by label).
+std::vector<int> resolve_node_field(const DeckState& state, const Record& record,
+                                    const DataLine& line, std::size_t field);
+/// Likewise for an element label or element set.
+std::vector<int> resolve_element_field(const DeckState& state, const Record& record,
+                                       const DataLine& line, std::size_t field);
+
+/// Members of a set as internal indices, sorted by deck label and deduplicated; throws at the
+/// defining line of the first member that does not exist.
+std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
+                                  const std::string& name);
+std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
+                                     const std::string& name);
+
+/// Amplitude index for an AMPLITUDE= parameter, -1 when absent.
+int amplitude_param(const DeckState& state, const Record& record);
+
+/// Checks cross references and produces the Model.
+model::Model finish_model(DeckState& state);
+
+}  // namespace kontakt::inp
