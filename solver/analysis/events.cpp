@@ -12,6 +12,7 @@ const char* kind_name(Event::Kind kind) {
     case Event::Kind::Iteration: return "iteration";
     case Event::Kind::Cutback: return "cutback";
     case Event::Kind::Output: return "output";
+    case Event::Kind::Warning: return "warning";
     case Event::Kind::Done: return "done";
     case Event::Kind::Error: return "error";
   }

@@ -9,14 +9,14 @@ namespace kontakt::analysis {
 
 /// One event; fields that do not apply to a kind stay at their defaults and are not written.
 struct Event {
-  enum class Kind { Step, Increment, Iteration, Cutback, Output, Done, Error };
+  enum class Kind { Step, Increment, Iteration, Cutback, Output, Warning, Done, Error };
   Kind kind = Kind::Step;
   int step = 0, increment = 0, attempt = 0, iteration = 0;
   Real step_time = 0, total_time = 0, dt = 0;
   Real residual = -1, correction = -1;  ///< ccx-style ratios in %, -1 when not measured
   Real wall_time = 0;                   ///< seconds since the run started
   std::string status{};                 ///< Done: converged | not_converged | input_error | error
-  std::string message{};                ///< Error and Done: human-readable text
+  std::string message{};                ///< Warning, Error and Done: human-readable text
   // Done summary
   int iterations = 0;
   Real max_displacement = 0, max_mises = 0;

@@ -14,6 +14,7 @@
 #include "core/parallel.hpp"
 #include "element/solid_linear.hpp"
 #include "linsolve/linear_solver.hpp"
+#include "linsolve/spd_solve.hpp"
 
 namespace kontakt::analysis {
 
@@ -180,6 +181,17 @@ void require_loads_reach_elements(const model::Model& model, const assembly::Dof
                         ", which belongs to no element: the load would have no effect");
 }
 
+std::string singular_mode_warning(const model::Model& model, const assembly::DofMap& dofs,
+                                  const linsolve::SpdSolveReport& report) {
+  std::string where = report.singular_equation >= 0
+                          ? " at " + dofs.describe(model, dofs.equation_dof(report.singular_equation))
+                          : "";
+  return "the stiffness matrix has a zero-energy mode" + where +
+         " (hourglassing of reduced-integration elements or a missing constraint) that the loads "
+         "do not excite; solved with stabilisation, the displacement in that mode is not "
+         "determined by the model";
+}
+
 /// Names the dof behind a singular pivot, if the solver could tell which.
 [[noreturn]] void rethrow_singular(const model::Model& model, const assembly::DofMap& dofs,
                                    const linsolve::SingularMatrix& e) {
@@ -205,6 +217,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
   std::unique_ptr<assembly::DofMap> dofs;
   std::unique_ptr<assembly::AssemblyPlan> plan;
   auto solver = linsolve::make_cholmod_solver();
+  linsolve::SpdSolve spd(*solver);
   bool factorised = false;
 
   Real total_time = 0, max_u = 0, max_mises = 0;
@@ -248,14 +261,18 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     require_loads_reach_elements(model, *dofs, f_ext);
     assembly::add_nodal_forces(*dofs, f_ext, system.rhs);
 
+    linsolve::SpdSolveReport report;
+    VecX x;
     try {
-      if (!factorised) solver->factorize(system.values);
+      if (!factorised) spd.factorise(plan->pattern, system.values, report);
       factorised = true;
+      x = spd.solve(plan->pattern, system.values, system.rhs, report);
     } catch (const linsolve::SingularMatrix& e) {
       rethrow_singular(model, *dofs, e);
     }
-    const VecX x = solver->solve(system.rhs);
-    if (!x.allFinite()) throw SolverError("the linear solve produced non-finite values");
+    if (report.stabilised)
+      events.on_event({.kind = Event::Kind::Warning, .step = step_no, .wall_time = wall(),
+                       .message = singular_mode_warning(model, *dofs, report)});
     const VecX u = dofs->expand(x, g);
 
     output::Frame frame = recover_frame(model, u, dT, threads);

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include "linsolve/linear_solver.hpp"
+#include "linsolve/spd_solve.hpp"
 
 using namespace kontakt;
 
@@ -92,4 +93,43 @@ TEST(LinearSolvers, BothDetectARigidBodyModeNumerically) {
     solver->analyze(p);
     EXPECT_THROW(solver->factorize(values), linsolve::SingularMatrix) << solver->name();
   }
+}
+
+TEST(SpdSolve, SolvesSingularSystemWhenTheLoadLeavesTheZeroModeAlone) {
+  // A free-free chain of three springs: null space = rigid translation (1, 1, 1, 1).
+  MatX A(4, 4);
+  A << 2, -2, 0, 0, -2, 5, -3, 0, 0, -3, 4, -1, 0, 0, -1, 1;
+  std::vector<Real> values;
+  const auto p = dense_pattern(A, true, values);
+  auto cholmod = linsolve::make_cholmod_solver();
+  cholmod->analyze(p);
+  linsolve::SpdSolve spd(*cholmod);
+  linsolve::SpdSolveReport report;
+  spd.factorise(p, values, report);
+  EXPECT_TRUE(report.stabilised);
+  VecX self_equilibrated(4);
+  self_equilibrated << 1, -2, 0.5, 0.5;  // sums to zero: orthogonal to the null space
+  const VecX x = spd.solve(p, values, self_equilibrated, report);
+  EXPECT_LT((A * x - self_equilibrated).norm(), 1e-8 * self_equilibrated.norm());
+  EXPECT_LT(report.relative_residual, 1e-8);
+  // A net force drives the rigid mode: no solution exists and none may be returned.
+  VecX net(4);
+  net << 1, 0, 0, 0;
+  EXPECT_THROW(spd.solve(p, values, net, report), linsolve::SingularMatrix);
+}
+
+TEST(SpdSolve, RegularSystemIsSolvedWithoutStabilisation) {
+  const MatX A = spd_matrix(12);
+  std::vector<Real> values;
+  const auto p = dense_pattern(A, true, values);
+  auto cholmod = linsolve::make_cholmod_solver();
+  cholmod->analyze(p);
+  linsolve::SpdSolve spd(*cholmod);
+  linsolve::SpdSolveReport report;
+  spd.factorise(p, values, report);
+  const VecX b = VecX::Random(12);
+  const VecX x = spd.solve(p, values, b, report);
+  EXPECT_FALSE(report.stabilised);
+  EXPECT_LT((A * x - b).norm(), 1e-12 * b.norm());
+  EXPECT_LT((linsolve::multiply_symmetric(p, values, x) - A * x).norm(), 1e-12 * b.norm());
 }

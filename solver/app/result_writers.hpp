@@ -1,0 +1,27 @@
+// The result files of one `kontakt solve` run, fed by the analysis frame by frame.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "analysis/linear_static.hpp"
+#include "output/dat_writer.hpp"
+#include "output/hdf5_writer.hpp"
+
+namespace kontakt::app {
+
+class ResultWriters final : public analysis::FrameSink {
+ public:
+  /// Opens DIR/JOB.dat and DIR/JOB.hdf.partial.
+  ResultWriters(const model::Model& model, const std::filesystem::path& dir,
+                const std::string& job);
+  void on_frame(const model::Step& step, const output::Frame& frame) override;
+  /// Completes the HDF5 file (rename from .partial) and writes the XDMF sidecar.
+  void finish();
+
+ private:
+  output::DatWriter dat_;
+  output::Hdf5Writer hdf5_;
+};
+
+}  // namespace kontakt::app

@@ -1,0 +1,186 @@
+#!/usr/bin/env python3
+"""Constant-strain patch tests for every solid element type.
+
+Requirement: for C3D4, C3D6, C3D8, C3D8R, C3D8I, C3D10, C3D15, C3D20 and
+C3D20R, a 3x3x3-cell box patch (wedges: 2 per cell, tets: 6 per cell) with
+randomly perturbed interior nodes whose boundary nodes are all prescribed to
+the linear field u = A x + b (A full, non-symmetric, entries ~1e-3) reproduces
+that field at every interior node, and the constant stress D*sym(A) at every
+integration point, exactly up to the resolution of the .dat print;
+likewise a box under uniform pressure on one face with a statically
+determinate support (XMIN roller + 3 point constraints) reproduces the
+uniaxial state sigma_xx = -p, u = (-p x/E, nu p y/E, nu p z/E) everywhere.
+
+"Exactly" means: |printed - exact| <= 0.5 unit in the last printed digit of
+the exact value (E13.6 -> 6 significant digits) + 1e-10 * field scale
+(displacements) or 1e-8 * stress scale (stresses).  The .dat format cannot
+resolve the 1e-10 relative target by itself; the print resolution is the
+binding part of the tolerance, and the report lists the error normalised by
+the field scale.
+
+Usage: test_patch.py [--solver kontakt|ccx] [--exe PATH] [--work DIR]
+"""
+
+import os
+import sys
+
+sys.dont_write_bytecode = True  # keep the source tree clean
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import datfile  # noqa: E402
+import meshgen as mg  # noqa: E402
+import vutil  # noqa: E402
+
+E, NU = 210000.0, 0.3
+SIZE = (2.0, 1.5, 1.0)
+ORIGIN = (0.3, -0.2, 0.1)
+N = (3, 3, 3)
+PERTURB = 0.25
+A = np.array([[1.2e-3, -0.7e-3, 0.4e-3],
+              [0.9e-3, -0.8e-3, 1.1e-3],
+              [-0.5e-3, 0.6e-3, 1.5e-3]])
+B = np.array([2.0e-4, -1.0e-4, 3.0e-4])
+PRESSURE = 100.0
+AFFINE = np.array([[1.0, 0.3, 0.1], [0.05, 1.0, 0.2], [0.1, -0.15, 1.0]])
+
+# ccx 2.20 itself does not pass the patch test on *non-affine* (randomly
+# perturbed) meshes for C3D8R (its hourglass vectors are not orthogonalised)
+# and C3D8I (incompatible modes without a patch-test correction): measured
+# errors ~2e-3..1.5e-2 (C3D8R) and ~1e-1 (C3D8I) of the field scale.  In
+# --solver ccx mode those checks are reported as XFAIL; both pass on affine
+# (parallelepiped) meshes, which validates the decks.  Kontakt implements the
+# Flanagan-Belytschko orthogonal hourglass vectors and the Taylor-corrected
+# incompatible modes, so for kontakt every check is strict.
+CCX_XFAIL = {"C3D8R", "C3D8I"}
+
+# integration points per element (ccx conventions)
+NIP = {"C3D4": 1, "C3D6": 2, "C3D8": 8, "C3D8R": 1, "C3D8I": 8,
+       "C3D10": 4, "C3D15": 9, "C3D20": 27, "C3D20R": 8}
+
+
+def check_fields(rep, tag, mesh, blocks, u_exact, s_exact, nset):
+    """Compare node displacements of `nset` and all integration-point
+    stresses; return (max normalised u error, max normalised s error)."""
+    u_scale = max(np.abs(u_exact(mesh.nodes[n])).max() for n in mesh.nodes)
+    s_scale = float(np.abs(s_exact).max())
+    disp = datfile.find(blocks, "displacements", nset).by_id()
+    ok_u = set(disp) == set(mesh.nsets[nset])
+    rep.check(f"{tag} displacement rows", ok_u,
+              f"got {len(disp)} rows, expected {len(mesh.nsets[nset])}")
+    eu, bad_u = 0.0, []
+    for n, vals in disp.items():
+        ue = u_exact(mesh.nodes[n])
+        for k in range(3):
+            err = abs(vals[k] - ue[k])
+            eu = max(eu, err / u_scale)
+            if err > 1e-10 * u_scale + 1.01 * vutil.print_tol(ue[k]):
+                bad_u.append((n, k + 1, vals[k], ue[k]))
+    rep.check(f"{tag} displacements exact", not bad_u, f"{len(bad_u)} bad, first {bad_u[:3]}")
+
+    st = datfile.find(blocks, "stresses", "EALL").by_elem_ip()
+    per_elem = {}
+    for (e, ip) in st:
+        per_elem[e] = per_elem.get(e, 0) + 1
+    ok_ip = (set(per_elem) == set(mesh.elements)
+             and all(c == NIP[mesh.etype] for c in per_elem.values()))
+    rep.check(f"{tag} stress rows ({NIP[mesh.etype]} ip/elem)", ok_ip,
+              f"{len(per_elem)} elems, ip counts {sorted(set(per_elem.values()))}")
+    es, bad_s = 0.0, []
+    for key, vals in st.items():
+        for k in range(6):
+            err = abs(vals[k] - s_exact[k])
+            es = max(es, err / s_scale)
+            if err > 1e-8 * s_scale + 1.01 * vutil.print_tol(s_exact[k]):
+                bad_s.append((key, k, vals[k], s_exact[k]))
+    rep.check(f"{tag} stresses exact", not bad_s, f"{len(bad_s)} bad, first {bad_s[:3]}")
+    return eu, es, not bad_u and not bad_s and ok_u and ok_ip
+
+
+def displacement_patch(args, rep, etype, affine=False):
+    if affine:
+        # parallelepiped elements: unperturbed box, sheared + stretched
+        mesh = mg.affine_map(mg.box_mesh(etype, N, SIZE, ORIGIN), AFFINE)
+        tag = "a"
+    else:
+        mesh = mg.box_mesh(etype, N, SIZE, ORIGIN, perturb=PERTURB, seed=7)
+        tag = "u"
+    deck = mg.Deck(mesh, f"displacement patch test {etype}")
+    deck.comments.append("generated by tests/verification/test_patch.py (meshgen)")
+    deck.set_material(E, NU)
+
+    def u_exact(x):
+        return A @ x + B
+    rows = []
+    for n in mesh.nsets["BOUNDARY"]:
+        u = u_exact(mesh.nodes[n])
+        rows += [(n, d + 1, d + 1, u[d]) for d in range(3)]
+    deck.boundary(rows)
+    deck.node_print("INTERIOR", "U")
+    deck.el_print("EALL", "S")
+    path = deck.write(os.path.join(args.work, f"patch_{tag}_{etype.lower()}.inp"))
+    eps = np.array([A[0, 0], A[1, 1], A[2, 2], A[0, 1] + A[1, 0],
+                    A[0, 2] + A[2, 0], A[1, 2] + A[2, 1]])
+    s_exact = vutil.iso_D(E, NU) @ eps
+    try:
+        blocks = vutil.run(args, path)
+    except vutil.SolverError as e:
+        rep.check(f"{etype} displacement patch solve", False, str(e))
+        return None
+    return check_fields(rep, f"{etype} {tag}-patch", mesh, blocks, u_exact, s_exact, "INTERIOR")
+
+
+def traction_patch(args, rep, etype):
+    mesh = mg.box_mesh(etype, N, SIZE, ORIGIN, perturb=PERTURB, seed=11)
+    deck = mg.Deck(mesh, f"traction patch test {etype}")
+    deck.comments.append("generated by tests/verification/test_patch.py (meshgen)")
+    deck.set_material(E, NU)
+    x0 = np.array(ORIGIN)
+    n0 = mesh.nearest_node(x0, "XMIN")
+    n1 = mesh.nearest_node(x0 + np.array([0.0, SIZE[1], 0.0]), "XMIN")
+    deck.boundary([("XMIN", 1, 1), (n0, 2, 3), (n1, 3, 3)])
+    deck.dload_pressure(mesh.faces_on("XMAX"), PRESSURE)
+    deck.node_print("ALL", "U")
+    deck.el_print("EALL", "S")
+    path = deck.write(os.path.join(args.work, f"patch_t_{etype.lower()}.inp"))
+
+    def u_exact(x):
+        d = np.asarray(x) - x0
+        return np.array([-PRESSURE / E * d[0], NU * PRESSURE / E * d[1], NU * PRESSURE / E * d[2]])
+    s_exact = np.array([-PRESSURE, 0, 0, 0, 0, 0])
+    try:
+        blocks = vutil.run(args, path)
+    except vutil.SolverError as e:
+        rep.check(f"{etype} traction patch solve", False, str(e))
+        return None
+    return check_fields(rep, f"{etype} t-patch", mesh, blocks, u_exact, s_exact, "ALL")
+
+
+def main():
+    args = vutil.parse_args(__doc__.splitlines()[0], "work_patch")
+    rep = vutil.Report(f"patch tests ({args.solver}: {args.exe})")
+    table = []
+    for etype in mg.ALL_TYPES:
+        ra = vutil.guarded(rep, f"{etype} a-patch", displacement_patch, args, rep, etype,
+                           affine=True)
+        rep.xfail = args.solver == "ccx" and etype in CCX_XFAIL
+        ru = vutil.guarded(rep, f"{etype} u-patch", displacement_patch, args, rep, etype)
+        rt = vutil.guarded(rep, f"{etype} t-patch", traction_patch, args, rep, etype)
+        rep.xfail = False
+        fmt = (lambda r, i: "n/a" if r is None else f"{r[i]:.2e}")
+        ok = all(r and r[2] for r in (ra, ru, rt))
+        st = "ok" if ok else ("XFAIL" if args.solver == "ccx" and etype in CCX_XFAIL
+                              and ra and ra[2] else "FAIL")
+        table.append((etype, fmt(ra, 0), fmt(ra, 1), fmt(ru, 0), fmt(ru, 1),
+                      fmt(rt, 0), fmt(rt, 1), st))
+    print()
+    print("max errors normalised by field scale (.dat print resolution ~5e-7..5e-6);")
+    print("a = affine (parallelepiped) mesh, u = perturbed mesh, t = traction patch")
+    rep.table(("type", "a |du|", "a |ds|", "u |du|", "u |ds|", "t |du|", "t |ds|",
+               "status"), table)
+    rep.finish()
+
+
+if __name__ == "__main__":
+    main()
