@@ -39,6 +39,17 @@ std::vector<int> set_members(const DeckState& state, const RawSet& set, const st
   return members;
 }
 
+/// GENERATE'd labels with no node, sorted and unique.
+std::vector<int> absent_generated_labels(const DeckState& state, const RawSet& set) {
+  std::vector<int> absent;
+  for (std::size_t i = 0; i < set.labels.size(); ++i)
+    if (set.line_ids[i] < 0 && !state.model.mesh.node_index.count(set.labels[i]))
+      absent.push_back(set.labels[i]);
+  std::sort(absent.begin(), absent.end());
+  absent.erase(std::unique(absent.begin(), absent.end()), absent.end());
+  return absent;
+}
+
 }  // namespace
 
 std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
@@ -123,7 +134,8 @@ void resolve_connectivity(DeckState& state) {
 
 void build_sets(DeckState& state) {
   for (const auto& [name, set] : state.node_sets) {
-    state.model.node_sets[name] = model::NodeSet{name, node_set_members(state, set, name)};
+    state.model.node_sets[name] =
+        model::NodeSet{name, node_set_members(state, set, name), absent_generated_labels(state, set)};
   }
   for (const auto& [name, set] : state.element_sets) {
     state.model.element_sets[name] =

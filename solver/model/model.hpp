@@ -34,6 +34,9 @@ struct Mesh {
 struct NodeSet {
   std::string name;               ///< upper case, as ccx prints it
   std::vector<int> nodes;         ///< internal indices
+  /// Labels a GENERATE range named that have no node. They carry no dof; ccx still prints
+  /// them in *NODE PRINT blocks (as zero rows), so the .dat writer does too.
+  std::vector<int> absent_labels{};
 };
 struct ElementSet {
   std::string name;

@@ -25,6 +25,9 @@ struct Frame {
   VecX ENER;                ///< strain energy density per point
   VecX ip_volume;           ///< volume carried by each point (for EVOL, ELSE totals)
   VecX EVOL;                ///< per element volume
+  /// Equivalent plastic strain per point; empty for purely elastic models (then ccx prints
+  /// no PEEQ block and the HDF5 file gets no PEEQ array).
+  VecX PEEQ;
   /// Nodal values extrapolated from the points and averaged over the elements at each node.
   MatX6 S_nodal, E_nodal;
 };

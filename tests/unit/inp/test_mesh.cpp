@@ -84,6 +84,11 @@ TEST(inpMesh, GenerateRangesSkipUndefinedLabelsLikeCcx) {
   EXPECT_EQ(m.node_sets.at("GAP").nodes.size(), 12u);
   EXPECT_EQ(m.element_sets.at("EGAP").elements.size(), 2u);
   EXPECT_EQ(m.surfaces.at("NS").nodes.size(), 12u);
+  // The labels without a node are kept aside: ccx prints them as zero rows.
+  const auto& absent = m.node_sets.at("GAP").absent_labels;
+  ASSERT_EQ(absent.size(), 88u);
+  EXPECT_EQ(absent.front(), 13);
+  EXPECT_EQ(absent.back(), 100);
 }
 
 TEST(inpMesh, SetsSortByLabelNotDefinitionOrder) {

@@ -1,0 +1,186 @@
+#include "output/dat_writer.hpp"
+
+#include <cstdio>
+#include <limits>
+
+#include "core/error.hpp"
+#include "output/dat_headers.hpp"
+#include "output/fortran_format.hpp"
+
+namespace kontakt::output {
+
+namespace {
+
+std::string i10(long long v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%10lld", v);
+  return b;
+}
+std::string i3(long long v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%3lld", v);
+  return b;
+}
+
+// (6x,1p,n(1x,e13.6))
+template <class It>
+std::string total_row(It begin, It end) {
+  std::string s(6, ' ');
+  for (It it = begin; it != end; ++it) s += ' ' + fortran_e13_6(*it);
+  return s;
+}
+
+}  // namespace
+
+bool print_due(const model::PrintRequest& request, const Frame& frame) {
+  if (request.frequency <= 0) return false;
+  return frame.is_step_end || frame.increment % request.frequency == 0;
+}
+
+DatWriter::DatWriter(const model::Model& model, std::filesystem::path path)
+    : model_(model), path_(std::move(path)), out_(path_, std::ios::out | std::ios::trunc) {
+  if (!out_) throw SolverError("cannot create " + path_.string());
+}
+
+void DatWriter::header(std::string_view prefix, const std::string& set, const Frame& f) {
+  out_ << '\n' << prefix << set << " and time " << fortran_e14_7(f.total_time) << "\n\n";
+}
+
+void DatWriter::write(const model::Step& step, const Frame& frame) {
+  for (const auto& r : step.prints) {
+    if (!print_due(r, frame)) continue;
+    if (r.kind == model::PrintRequest::Kind::Node)
+      node_request(r, frame);
+    else
+      element_request(r, frame);
+  }
+  out_.flush();
+  if (!out_) throw SolverError("write error on " + path_.string());
+}
+
+void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
+  const auto it = model_.node_sets.find(r.set);
+  if (it == model_.node_sets.end()) throw SolverError("*NODE PRINT: unknown node set " + r.set);
+  const auto& nodes = it->second.nodes;
+  const auto& ids = model_.mesh.node_ids;
+  // Labels a GENERATE range named without a node print as zero rows, in label order (ccx).
+  const auto& absent = it->second.absent_labels;
+  auto rows = [&](const MatX3& m) {
+    KONTAKT_REQUIRE(m.rows() == model_.n_nodes(), "DatWriter: nodal array has wrong size");
+    auto next_absent = absent.begin();
+    auto zero_rows_below = [&](int label) {
+      for (; next_absent != absent.end() && *next_absent < label; ++next_absent)
+        out_ << i10(*next_absent) << ' ' << fortran_e13_6(0.0) << ' ' << fortran_e13_6(0.0) << ' '
+             << fortran_e13_6(0.0) << '\n';
+    };
+    for (int n : nodes) {
+      zero_rows_below(ids[static_cast<std::size_t>(n)]);
+      out_ << i10(ids[static_cast<std::size_t>(n)]);
+      for (int c = 0; c < 3; ++c) out_ << ' ' << fortran_e13_6(m(n, c));
+      out_ << '\n';
+    }
+    zero_rows_below(std::numeric_limits<int>::max());
+  };
+  for (const auto& var : r.variables) {
+    if (var == "U") {
+      header(dat_header_prefix(DatBlock::U), r.set, f);
+      rows(f.U);
+    } else if (var == "RF") {
+      if (r.totals != model::Totals::Only) {
+        header(dat_header_prefix(DatBlock::RF), r.set, f);
+        rows(f.RF);
+      }
+      if (r.totals != model::Totals::No) {
+        Real t[3] = {0, 0, 0};
+        for (int n : nodes)
+          for (int c = 0; c < 3; ++c) t[c] += f.RF(n, c);
+        header(dat_header_prefix(DatBlock::RF_TOTAL), r.set, f);
+        out_ << total_row(t, t + 3) << '\n';
+      }
+    }
+  }
+}
+
+void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
+  const auto it = model_.element_sets.find(r.set);
+  if (it == model_.element_sets.end())
+    throw SolverError("*EL PRINT: unknown element set " + r.set);
+  const auto& elems = it->second.elements;
+  const auto& mesh = model_.mesh;
+  const auto need_ip = [&](Index rows) {
+    KONTAKT_REQUIRE(f.ip_offset.size() == static_cast<std::size_t>(model_.n_elements()) + 1,
+                    "DatWriter: frame ip_offset has wrong size");
+    KONTAKT_REQUIRE(rows == f.ip_offset.back(), "DatWriter: point array has wrong size");
+  };
+  const auto label = [&](int e) { return mesh.elements[static_cast<std::size_t>(e)].id; };
+
+  // (i10,1x,i3,1p,n(1x,e13.6))
+  auto ip_rows6 = [&](const MatX6& m) {
+    need_ip(m.rows());
+    for (int e : elems) {
+      const Index b = f.ip_offset[static_cast<std::size_t>(e)];
+      const Index en = f.ip_offset[static_cast<std::size_t>(e) + 1];
+      for (Index p = b; p < en; ++p) {
+        out_ << i10(label(e)) << ' ' << i3(p - b + 1);
+        for (int c = 0; c < 6; ++c) out_ << ' ' << fortran_e13_6(m(p, c));
+        out_ << '\n';
+      }
+    }
+  };
+  auto ip_rows1 = [&](const VecX& v) {
+    need_ip(v.size());
+    for (int e : elems) {
+      const Index b = f.ip_offset[static_cast<std::size_t>(e)];
+      const Index en = f.ip_offset[static_cast<std::size_t>(e) + 1];
+      for (Index p = b; p < en; ++p)
+        out_ << i10(label(e)) << ' ' << i3(p - b + 1) << ' ' << fortran_e13_6(v(p)) << '\n';
+    }
+  };
+  // (i10,1p,1x,e13.6) per element, then optional total block.
+  auto per_element = [&](DatBlock block, DatBlock total_block, auto value_of) {
+    Real total = 0;
+    if (r.totals != model::Totals::Only) header(dat_header_prefix(block), r.set, f);
+    for (int e : elems) {
+      const Real v = value_of(e);
+      total += v;
+      if (r.totals != model::Totals::Only)
+        out_ << i10(label(e)) << ' ' << fortran_e13_6(v) << '\n';
+    }
+    if (r.totals != model::Totals::No) {
+      header(dat_header_prefix(total_block), r.set, f);
+      out_ << total_row(&total, &total + 1) << '\n';
+    }
+  };
+
+  for (const auto& var : r.variables) {
+    if (var == "S") {
+      header(dat_header_prefix(DatBlock::S), r.set, f);
+      ip_rows6(f.S);
+    } else if (var == "E") {
+      header(dat_header_prefix(DatBlock::E), r.set, f);
+      ip_rows6(f.E);
+    } else if (var == "ENER") {
+      header(dat_header_prefix(DatBlock::ENER), r.set, f);
+      ip_rows1(f.ENER);
+    } else if (var == "PEEQ") {
+      if (f.PEEQ.size() == 0) continue;  // ccx prints no PEEQ block for elastic models
+      header(dat_header_prefix(DatBlock::PEEQ), r.set, f);
+      ip_rows1(f.PEEQ);
+    } else if (var == "ELSE") {
+      need_ip(f.ENER.size());
+      KONTAKT_REQUIRE(f.ip_volume.size() == f.ENER.size(), "DatWriter: ip_volume has wrong size");
+      per_element(DatBlock::ELSE, DatBlock::ELSE_TOTAL, [&](int e) {
+        Real s = 0;
+        for (Index p = f.ip_offset[static_cast<std::size_t>(e)];
+             p < f.ip_offset[static_cast<std::size_t>(e) + 1]; ++p)
+          s += f.ENER(p) * f.ip_volume(p);
+        return s;
+      });
+    } else if (var == "EVOL") {
+      KONTAKT_REQUIRE(f.EVOL.size() == model_.n_elements(), "DatWriter: EVOL has wrong size");
+      per_element(DatBlock::EVOL, DatBlock::EVOL_TOTAL, [&](int e) { return f.EVOL(e); });
+    }
+  }
+}
+
+}  // namespace kontakt::output

@@ -1,0 +1,74 @@
+// HDF5 results file (kontakt-results 1.0, with a VTKHDF 1.0 view ParaView opens directly) and
+// its XDMF 3 sidecar. Layout: proto/results_layout.md.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+#include "output/frame.hpp"
+
+namespace kontakt::output {
+
+/// Output fields the HDF5 writer understands (names as in *NODE FILE / *EL FILE).
+inline const std::set<std::string> kHdf5Fields{"U", "RF", "S", "E", "ENER", "PEEQ", "EVOL"};
+
+/// The union over all steps of the *NODE FILE / *EL FILE / *NODE OUTPUT / *ELEMENT OUTPUT
+/// variables we can write (others are dropped). When no step requests anything the default is
+/// {"U", "S"} (a results file without fields is useless in ParaView).
+std::set<std::string> requested_fields(const model::Model& model);
+
+/// True when any file request of `step` is due at `frame` (every frequency-th increment and at
+/// step end). A step without file requests is due at every step end only.
+bool file_output_due(const model::Step& step, const Frame& frame);
+
+class Hdf5Writer {
+ public:
+  /// Creates DIR/MODEL.hdf.partial and writes /mesh and the geometry of /VTKHDF.
+  /// `fields` as returned by requested_fields(). Throws SolverError on HDF5 failures.
+  Hdf5Writer(const model::Model& model, std::filesystem::path dir, std::string model_name,
+             std::set<std::string> fields);
+  ~Hdf5Writer();  ///< closes; an unfinished file stays as MODEL.hdf.partial
+  Hdf5Writer(const Hdf5Writer&) = delete;
+  Hdf5Writer& operator=(const Hdf5Writer&) = delete;
+
+  /// Appends /frames/NNNNNN (numbered from 000001 in call order).
+  void write(const Frame& frame);
+  /// Records one attempted increment for /history/increments (written by finish()).
+  void add_increment(const IncrementRecord& record);
+  /// Writes /history, completes /VTKHDF (attributes, PointData/CellData hard links to the last
+  /// frame), closes, renames MODEL.hdf.partial -> MODEL.hdf and writes MODEL.xdmf.
+  void finish();
+
+  std::filesystem::path partial_path() const;
+  std::filesystem::path final_path() const;
+  std::filesystem::path xdmf_path() const;
+  int frames_written() const { return static_cast<int>(frames_.size()); }
+
+ private:
+  struct FrameInfo {
+    std::string group;       ///< "000001"
+    double time;
+    std::vector<std::string> node_arrays;  ///< names of nodal arrays in the frame group
+    std::vector<std::string> cell_arrays;
+  };
+  struct Impl;
+
+  void write_mesh();
+  void write_xdmf() const;
+
+  const model::Model& model_;
+  std::filesystem::path dir_;
+  std::string name_;
+  std::set<std::string> fields_;
+  std::unique_ptr<Impl> impl_;
+  std::vector<FrameInfo> frames_;
+  std::vector<IncrementRecord> history_;
+  bool ip_offset_written_ = false;
+  bool finished_ = false;
+};
+
+}  // namespace kontakt::output

@@ -1,0 +1,253 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "output/dat_headers.hpp"
+#include "output/dat_writer.hpp"
+#include "test_model.hpp"
+
+namespace kontakt::output {
+namespace {
+
+namespace fs = std::filesystem;
+using model::PrintRequest;
+using model::Totals;
+
+PrintRequest node(std::string set, std::vector<std::string> vars, Totals t = Totals::No,
+                  int freq = 1) {
+  PrintRequest r;
+  r.kind = PrintRequest::Kind::Node;
+  r.set = std::move(set);
+  r.variables = std::move(vars);
+  r.totals = t;
+  r.frequency = freq;
+  return r;
+}
+PrintRequest elem(std::string set, std::vector<std::string> vars, Totals t = Totals::No) {
+  auto r = node(std::move(set), std::move(vars), t);
+  r.kind = PrintRequest::Kind::Element;
+  return r;
+}
+
+Frame two_tet_frame() {
+  Frame f;
+  f.step = 1;
+  f.increment = 3;
+  f.total_time = 1.5;
+  f.step_time = 1.5;
+  f.is_step_end = true;
+  f.U.resize(5, 3);
+  for (int i = 0; i < 5; ++i) f.U.row(i) << 0.001 * (i + 1), -0.5 * (i + 1), 0.0;
+  f.RF = MatX3::Zero(5, 3);
+  f.RF.row(0) << -100, 2.5, 1e-20;
+  f.RF.row(1) << -50, -2.5, 3e-20;
+  f.ip_offset = {0, 1, 2};
+  f.S.resize(2, 6);
+  f.S.row(0) << 1e3, 2e3, 3e3, 4e3, 5e3, 6e3;
+  f.S.row(1) << -1.5, 0, 0, 0, 0, 9.9999996e99;
+  f.E.resize(2, 6);
+  f.E.row(0) << 1e-3, 2e-3, 3e-3, 4e-3, 5e-3, 6e-3;
+  f.E.row(1) << -1e-5, 0, 0, 0, 0, 0;
+  f.ENER.resize(2);
+  f.ENER << 0.5, 0.25;
+  f.ip_volume.resize(2);
+  f.ip_volume << 2, 4;
+  f.EVOL.resize(2);
+  f.EVOL << 2, 4;
+  return f;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path tmp(const std::string& name) {
+  auto d = fs::temp_directory_path() / ("kontakt_test_output_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d / name;
+}
+
+// Layout established against ccx 2.20 (see proto/results_layout.md).
+const char* kGolden = R"(
+ displacements (vx,vy,vz) for set NALL and time  0.1500000E+01
+
+        10  1.000000E-03 -5.000000E-01  0.000000E+00
+        20  2.000000E-03 -1.000000E+00  0.000000E+00
+        30  3.000000E-03 -1.500000E+00  0.000000E+00
+        40  4.000000E-03 -2.000000E+00  0.000000E+00
+        50  5.000000E-03 -2.500000E+00  0.000000E+00
+
+ forces (fx,fy,fz) for set FIX and time  0.1500000E+01
+
+        10 -1.000000E+02  2.500000E+00  1.000000E-20
+        20 -5.000000E+01 -2.500000E+00  3.000000E-20
+
+ total force (fx,fy,fz) for set FIX and time  0.1500000E+01
+
+       -1.500000E+02  0.000000E+00  4.000000E-20
+
+ total force (fx,fy,fz) for set FIX and time  0.1500000E+01
+
+       -1.500000E+02  0.000000E+00  4.000000E-20
+
+ strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz) for set EALL and time  0.1500000E+01
+
+         7   1  1.000000E-03  2.000000E-03  3.000000E-03  4.000000E-03  5.000000E-03  6.000000E-03
+         8   1 -1.000000E-05  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00
+
+ stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz) for set EALL and time  0.1500000E+01
+
+         7   1  1.000000E+03  2.000000E+03  3.000000E+03  4.000000E+03  5.000000E+03  6.000000E+03
+         8   1 -1.500000E+00  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00  1.000000+100
+
+ internal energy density (elem, integ.pnt.,energy) for set EALL and time  0.1500000E+01
+
+         7   1  5.000000E-01
+         8   1  2.500000E-01
+
+ internal energy (element, energy) for set EALL and time  0.1500000E+01
+
+         7  1.000000E+00
+         8  1.000000E+00
+
+ total internal energy for set EALL and time  0.1500000E+01
+
+        2.000000E+00
+
+ volume (element, volume) for set EALL and time  0.1500000E+01
+
+         7  2.000000E+00
+         8  4.000000E+00
+
+ total volume for set EALL and time  0.1500000E+01
+
+        6.000000E+00
+
+ total volume for set E2 and time  0.1500000E+01
+
+        4.000000E+00
+)";
+
+TEST(DatWriter, GoldenTwoTetModel) {
+  auto m = test::two_tets();
+  auto& step = m.steps[0];
+  step.prints = {node("NALL", {"U"}),
+                 node("FIX", {"RF"}, Totals::Yes),
+                 node("FIX", {"RF"}, Totals::Only),
+                 elem("EALL", {"E", "S"}),
+                 elem("EALL", {"ENER", "ELSE", "EVOL"}, Totals::Yes),
+                 elem("E2", {"EVOL", "PEEQ", "NOSUCHVAR"}, Totals::Only)};
+  const auto path = tmp("golden.dat");
+  {
+    DatWriter w(m, path);
+    w.write(step, two_tet_frame());
+  }
+  EXPECT_EQ(slurp(path), kGolden);
+}
+
+TEST(DatWriter, FrequencyAndStepEnd) {
+  auto m = test::two_tets();
+  auto& step = m.steps[0];
+  step.prints = {node("FIX", {"U"}, Totals::No, 2)};
+  const auto path = tmp("freq.dat");
+  DatWriter w(m, path);
+  auto f = two_tet_frame();
+  f.is_step_end = false;
+  f.increment = 1;
+  w.write(step, f);
+  EXPECT_EQ(slurp(path), "");
+  f.increment = 2;
+  f.total_time = 0.25;
+  w.write(step, f);
+  const std::string block =
+      "\n displacements (vx,vy,vz) for set FIX and time  0.2500000E+00\n\n"
+      "        10  1.000000E-03 -5.000000E-01  0.000000E+00\n"
+      "        20  2.000000E-03 -1.000000E+00  0.000000E+00\n";
+  EXPECT_EQ(slurp(path), block);
+  f.increment = 3;  // not due, not the end
+  w.write(step, f);
+  EXPECT_EQ(slurp(path), block);
+  f.is_step_end = true;  // always at the step end
+  w.write(step, f);
+  EXPECT_EQ(slurp(path), block + block);
+}
+
+TEST(DatWriter, PeeqHeaderHasNoBlankBeforeFor) {
+  auto m = test::two_tets();
+  auto& step = m.steps[0];
+  step.prints = {elem("E2", {"PEEQ"})};
+  const auto path = tmp("peeq.dat");
+  auto f = two_tet_frame();
+  f.PEEQ.resize(2);
+  f.PEEQ << 0.0, 3.959574e-2;
+  {
+    DatWriter w(m, path);
+    w.write(step, f);
+  }
+  EXPECT_EQ(slurp(path),
+            "\n equivalent plastic strain (elem, integ.pnt.,pe)for set E2 and time  "
+            "0.1500000E+01\n\n         8   1  3.959574E-02\n");
+}
+
+TEST(DatWriter, MultiplePointsPerElementAndLargeLabels) {
+  auto m = test::two_tets();
+  m.mesh.elements[1].id = 1234567;
+  auto& step = m.steps[0];
+  step.prints = {elem("E2", {"ENER"})};
+  auto f = two_tet_frame();
+  f.ip_offset = {0, 1, 13};
+  f.ENER = VecX::Constant(13, 1.0);
+  const auto path = tmp("many.dat");
+  {
+    DatWriter w(m, path);
+    w.write(step, f);
+  }
+  const auto text = slurp(path);
+  EXPECT_NE(text.find("\n   1234567   1  1.000000E+00\n"), std::string::npos);
+  EXPECT_NE(text.find("\n   1234567  12  1.000000E+00\n"), std::string::npos);
+}
+
+TEST(DatWriter, AbsentGeneratedLabelsPrintAsZeroRowsInLabelOrder) {
+  auto m = test::two_tets();
+  m.node_sets["FIX"].absent_labels = {5, 15, 30};
+  auto& step = m.steps[0];
+  step.prints = {node("FIX", {"U"})};
+  const auto path = tmp("absent.dat");
+  {
+    DatWriter w(m, path);
+    w.write(step, two_tet_frame());
+  }
+  const std::string zero = "  0.000000E+00  0.000000E+00  0.000000E+00\n";
+  const std::string rows = "         5" + zero +
+                           "        10  1.000000E-03 -5.000000E-01  0.000000E+00\n"
+                           "        15" + zero +
+                           "        20  2.000000E-03 -1.000000E+00  0.000000E+00\n"
+                           "        30" + zero;
+  EXPECT_NE(slurp(path).find(rows), std::string::npos) << slurp(path);
+}
+
+TEST(DatWriter, UnknownSetThrows) {
+  auto m = test::two_tets();
+  m.steps[0].prints = {node("NOPE", {"U"})};
+  DatWriter w(m, tmp("bad.dat"));
+  EXPECT_THROW(w.write(m.steps[0], two_tet_frame()), SolverError);
+}
+
+TEST(DatHeaders, TableIsComplete) {
+  for (auto b : {DatBlock::U, DatBlock::RF, DatBlock::RF_TOTAL, DatBlock::S, DatBlock::E,
+                 DatBlock::ENER, DatBlock::PEEQ, DatBlock::ELSE, DatBlock::ELSE_TOTAL,
+                 DatBlock::EVOL, DatBlock::EVOL_TOTAL}) {
+    const auto h = dat_header_prefix(b);
+    ASSERT_FALSE(h.empty());
+    EXPECT_EQ(h.front(), ' ');
+    EXPECT_TRUE(h.ends_with("for set "));
+  }
+}
+
+}  // namespace
+}  // namespace kontakt::output
