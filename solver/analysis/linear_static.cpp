@@ -84,12 +84,17 @@ VecX external_forces(const model::Model& model, const model::Step& step, Real pe
   return f;
 }
 
+/// Values of the prescribed dofs; `u_previous` is the previous step's displacement (for FIXED).
 VecX prescribed_values(const model::Model& model, const model::Step& step,
-                       const assembly::DofMap& dofs, Real period, Real total_time) {
+                       const assembly::DofMap& dofs, Real period, Real total_time,
+                       const VecX& u_previous) {
   VecX g = VecX::Zero(dofs.n_prescribed());
-  for (const auto& bc : step.boundaries)  // later entries win, as in ccx
-    g[dofs.prescribed_slot(3 * bc.node + bc.dof)] =
-        bc.value * amplitude_at_end(model, bc.amplitude, period, total_time);
+  for (const auto& bc : step.boundaries) {  // later entries win, as in ccx
+    const int d = 3 * bc.node + bc.dof;
+    g[dofs.prescribed_slot(d)] =
+        bc.hold_previous ? u_previous[d]
+                         : bc.value * amplitude_at_end(model, bc.amplitude, period, total_time);
+  }
   return g;
 }
 
@@ -221,6 +226,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
   bool factorised = false;
 
   Real total_time = 0, max_u = 0, max_mises = 0;
+  VecX u_previous = VecX::Zero(3 * model.n_nodes());
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     const int step_no = static_cast<int>(s) + 1;
@@ -240,7 +246,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
 
     const VecX dT = temperature_change(model, step);
     const bool has_thermal_strain = dT.size() > 0 && dT.cwiseAbs().maxCoeff() > 0;
-    const VecX g = prescribed_values(model, step, *dofs, period, total_time);
+    const VecX g = prescribed_values(model, step, *dofs, period, total_time, u_previous);
     assembly::ReducedSystem system;
     assembly::assemble(
         model, *plan, g,
@@ -274,6 +280,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
       events.on_event({.kind = Event::Kind::Warning, .step = step_no, .wall_time = wall(),
                        .message = singular_mode_warning(model, *dofs, report)});
     const VecX u = dofs->expand(x, g);
+    u_previous = u;
 
     output::Frame frame = recover_frame(model, u, dT, threads);
     frame.step = step_no;

@@ -36,9 +36,11 @@ int translation_dof(const Record& record, const DataLine& line, std::size_t fiel
   return dof - 1;
 }
 
+/// One *BOUNDARY data line; with FIXED the dofs keep their displacement from the end of the
+/// previous step (ccx), so the line takes no value.
 void read_boundary_line(const Record& record, const DataLine& line, DeckState& state,
-                        int amplitude) {
-  require_field_count(record, line, 2, 4);
+                        int amplitude, bool hold_previous) {
+  require_field_count(record, line, 2, hold_previous ? 3 : 4);
   const int first = translation_dof(record, line, 1);
   const bool has_last = line.fields.size() > 2 && !line.fields[2].empty();
   const int last = has_last ? translation_dof(record, line, 2) : first;
@@ -47,7 +49,8 @@ void read_boundary_line(const Record& record, const DataLine& line, DeckState& s
   for (int node : resolve_node_field(state, record, line, 0)) {
     for (int dof = first; dof <= last; ++dof) {
       // Same node and dof: the later definition replaces the earlier (ccx bounadd).
-      state.active.boundaries[{node, dof}] = model::Boundary{node, dof, value, amplitude};
+      state.active.boundaries[{node, dof}] =
+          model::Boundary{node, dof, value, amplitude, hold_previous};
     }
   }
 }
@@ -96,11 +99,15 @@ void check_face_exists(const Record& record, const DataLine& line, const DeckSta
 }  // namespace
 
 void handle_boundary(const Record& record, DeckState& state) {
-  check_params(record, {"OP", "AMPLITUDE"});
+  check_params(record, {"OP", "AMPLITUDE", "FIXED"});
+  const bool hold_previous = has_param(record, "FIXED");
+  if (hold_previous && !state.open_step)
+    fail(record, "FIXED is only allowed inside a step (it refers to the previous step's result)");
   // ccx removes every earlier *BOUNDARY condition, model-level ones included.
   if (op_new_requested(record, state)) state.active.boundaries.clear();
   const int amplitude = amplitude_param(state, record);
-  for (const DataLine& line : record.lines) read_boundary_line(record, line, state, amplitude);
+  for (const DataLine& line : record.lines)
+    read_boundary_line(record, line, state, amplitude, hold_previous);
 }
 
 void handle_cload(const Record& record, DeckState& state) {
@@ -129,9 +136,11 @@ void handle_dload(const Record& record, DeckState& state) {
   const int amplitude = amplitude_param(state, record);
   StepProgress& progress = *state.open_step;
   for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 2, 1000);
+    const std::vector<FaceKey> faces = pressure_faces(record, line, state);  // checks the type
     require_field_count(record, line, 3, 3);
     const Real value = real_field(record, line, 2);
-    for (const FaceKey& key : pressure_faces(record, line, state)) {
+    for (const FaceKey& key : faces) {
       check_face_exists(record, line, state, key);
       model::PressureLoad& load = state.active.pressures[key];
       const bool again_in_step = !progress.pressures_in_step.insert(key).second;

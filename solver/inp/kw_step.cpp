@@ -39,10 +39,9 @@ void handle_static(const Record& record, DeckState& state) {
   model::StaticProcedure& procedure = progress.step.procedure;
   procedure.direct = has_param(record, "DIRECT");
   require_line_count(record, 0, 1);
-  if (record.lines.empty()) {
-    state.warn(record.where, record.keyword, "no data line: initial increment and period 1");
-    return;
-  }
+  // Without a data line the step runs over (1, 1); like ccx, only a nonlinear step warns
+  // about it, which the analysis decides (data_line_given stays false).
+  if (record.lines.empty()) return;
   const DataLine& line = record.lines.front();
   require_field_count(record, line, 1, 4);
   procedure.data_line_given = true;

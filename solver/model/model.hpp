@@ -96,6 +96,9 @@ struct Boundary {
   int dof = 0;
   Real value = 0;
   int amplitude = -1;             ///< index into Model::amplitudes, -1 = ramp/step default
+  /// *BOUNDARY, FIXED: hold the displacement reached at the end of the previous step
+  /// (zero in the first step); `value` is unused.
+  bool hold_previous = false;
 };
 struct ConcentratedLoad {
   int node = 0;

@@ -206,3 +206,22 @@ TEST(LinearStatic, ResultsDoNotDependOnThreadCount) {
   EXPECT_EQ((one.frames[0].U - two.frames[0].U).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((one.frames[0].S - two.frames[0].S).cwiseAbs().maxCoeff(), 0.0);
 }
+
+TEST(LinearStatic, BoundaryFixedHoldsThePreviousStepsDisplacement) {
+  // Step 1 pulls the x = 1 face; step 2 removes the load but FIXED holds node 2 where it was.
+  const auto c = solve(cube_deck(std::string(kRollers) + R"(*STEP
+*STATIC
+*CLOAD
+X1, 1, 2.5
+*END STEP
+*STEP
+*STATIC
+*CLOAD, OP=NEW
+*BOUNDARY, FIXED
+2, 1, 1
+*END STEP
+)"));
+  ASSERT_EQ(c.frames.size(), 2u);
+  EXPECT_NEAR(c.frames[0].U(1, 0), 0.01, 1e-14);
+  EXPECT_NEAR(c.frames[1].U(1, 0), 0.01, 1e-14);
+}
