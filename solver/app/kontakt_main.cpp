@@ -17,6 +17,7 @@
 #include "app/result_writers.hpp"
 #include "core/error.hpp"
 #include "inp/read_deck.hpp"
+#include "linsolve/blas_threads.hpp"
 
 namespace fs = std::filesystem;
 using namespace kontakt;
@@ -31,7 +32,7 @@ void print_usage(std::FILE* out) {
       "       kontakt --version\n"
       "\n"
       "  -o DIR       write results to DIR (default: the deck's folder)\n"
-      "  --threads N  worker threads for assembly and recovery (default: all cores)\n"
+      "  --threads N  threads for assembly, recovery and the factorisation (default: all cores)\n"
       "  --quiet      no progress output\n"
       "\n"
       "exit codes: 0 converged, 2 input error, 3 not converged, 4 numerical/internal error\n",
@@ -111,6 +112,7 @@ int run_solve(const SolveArgs& args) {
     log.on_event(done);
     return code;
   };
+  if (args.threads > 0) linsolve::set_blas_threads(args.threads);
   try {
     const model::Model model = inp::read_deck(args.deck);
     for (const auto& w : model.warnings) std::fprintf(stderr, "kontakt: warning: %s\n", w.c_str());

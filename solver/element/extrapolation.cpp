@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "element/quadrature.hpp"
+#include "element/shape_functions.hpp"
 #include "element/solid_linear.hpp"
 
 namespace kontakt::element {
@@ -25,6 +26,15 @@ VecX tri_linear_x_zeta_linear(const Vec3& p) {
   VecX v(6);
   v << 1, p(0), p(1), p(2), p(0) * p(2), p(1) * p(2);
   return v;
+}
+
+/// The 20-node serendipity functions as a fitting basis: the fit over the 27 points of the
+/// 3x3x3 rule then gives the nodal values directly (ccx extrapolates C3D20 this way).
+VecX hex20_shape_functions(const Vec3& p) {
+  ShapeVec N;
+  ShapeGrad dN;
+  shape_functions(Topology::Hex20, p, N, dN);
+  return N;
 }
 
 // ccx 2.20's C3D6 table (measured from .frd nodal stresses): linear zeta-extrapolation from
@@ -66,8 +76,8 @@ MatX build(ElementType type) {
     case ElementType::C3D8:
     case ElementType::C3D8I:
     case ElementType::C3D20R: return fit_through(type, all_points(type), trilinear);
-    case ElementType::C3D20:  // 8 corner points of the 3x3x3 rule; NOT ccx's scheme (differs ~30%)
-      return fit_through(type, {0, 2, 6, 8, 18, 20, 24, 26}, trilinear);
+    case ElementType::C3D20:  // least squares of the element's own interpolation over all 27
+      return fit_through(type, all_points(type), hex20_shape_functions);  // points, as ccx
     case ElementType::C3D8R: return MatX::Ones(8, 1);
     case ElementType::C3D4: return MatX::Ones(4, 1);
     case ElementType::C3D10: return fit_through(type, all_points(type), linear);

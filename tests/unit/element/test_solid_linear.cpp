@@ -201,5 +201,22 @@ TEST(SolidBending, IncompatibleModesBeatPlainBrick) {
   EXPECT_LT(std::abs(c3d8i - beam), 0.25 * std::abs(c3d8 - beam));
 }
 
+TEST(Extrapolation, C3D20FitsItsOwnInterpolationOverAll27PointsLikeCcx) {
+  // Point values sampled from any field of the 20-node interpolation return its nodal values.
+  const MatX& E = ip_to_node_extrapolation(ElementType::C3D20);
+  const auto rule = volume_rule(ElementType::C3D20);
+  VecX nodal_field = VecX::LinSpaced(20, -1.0, 2.0).array().square();
+  VecX at_ip(27);
+  for (int k = 0; k < 27; ++k) {
+    ShapeVec N;
+    ShapeGrad dN;
+    shape_functions(Topology::Hex20, rule[k].xi, N, dN);
+    at_ip(k) = N.dot(nodal_field);
+  }
+  EXPECT_LT((E * at_ip - nodal_field).cwiseAbs().maxCoeff(), 1e-12);
+  // ccx 2.20 tabulates this weight (corner node 1 from point 1) as 2.37499.
+  EXPECT_NEAR(E(0, 0), 2.37499, 1e-5);
+}
+
 }  // namespace
 }  // namespace kontakt::element

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include "linsolve/linear_solver.hpp"
+#include "linsolve/blas_threads.hpp"
 #include "linsolve/spd_solve.hpp"
 
 using namespace kontakt;
@@ -132,4 +133,9 @@ TEST(SpdSolve, RegularSystemIsSolvedWithoutStabilisation) {
   EXPECT_FALSE(report.stabilised);
   EXPECT_LT((A * x - b).norm(), 1e-12 * b.norm());
   EXPECT_LT((linsolve::multiply_symmetric(p, values, x) - A * x).norm(), 1e-12 * b.norm());
+}
+
+TEST(BlasThreads, TheInstalledBlasAcceptsAThreadCount) {
+  // deploy/install-deps.sh installs OpenBLAS; `kontakt --threads N` relies on reaching it.
+  EXPECT_TRUE(linsolve::set_blas_threads(1));
 }
