@@ -61,7 +61,7 @@ def write_block(path, element, dofs):
                 lines.append(text)
     fix = [n for (i, j, k), n in ids.items() if i == 0]
     tip = sorted(n for (i, j, k), n in ids.items() if i == NX - 1)
-    centre = sorted(n for (i, j, k), n in ids.items() if i == NX - 1 and 2 * j == NY - 1)
+    centre = sorted(n for (i, j, k), n in ids.items() if i == NX - 1 and j == (NY - 1) // 2)
     lines.append("*NSET, NSET=FIX")
     lines += [", ".join(map(str, fix[s:s + 16])) for s in range(0, len(fix), 16)]
     lines.append("*NSET, NSET=TIPLINE")
