@@ -1,0 +1,73 @@
+// Small-strain isotropic J2 (von Mises) plasticity with piecewise-linear isotropic
+// hardening, integrated by the radial-return mapping with its consistent tangent.
+//
+// Conventions (see solver/core/types.hpp): Voigt order xx, yy, zz, xy, xz, yz.
+//   * INPUT total strain: ENGINEERING shear components (gamma_xy = 2 eps_xy), i.e. the
+//     strain B*u of a displacement element.
+//   * Stress: ordinary Cauchy components (sigma_xy, ...).
+//   * Stored plastic strain (J2State::plastic_strain): TENSOR shear components
+//     (eps_p_xy, ...), the convention used for reported strains.
+//   * Tangent: d(stress)/d(engineering strain), 6x6, symmetric.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace kontakt::material {
+
+/// Isotropic hardening curve as given under ccx/Abaqus *PLASTIC (HARDENING=ISOTROPIC):
+/// rows of (von Mises yield stress, equivalent plastic strain), plastic strain strictly
+/// ascending, first row at plastic strain 0 (initial yield). One row = perfectly
+/// plastic. Linear between rows; beyond the last row the yield stress stays at the last
+/// value (slope 0) -- what ccx does (plinterpol.f: f = last stress, df = 0, with a
+/// warning); the ccx manual itself does not document the extrapolation.
+struct HardeningTable {
+  /// (yield stress, equivalent plastic strain) pairs, in *PLASTIC column order.
+  std::vector<std::pair<Real, Real>> points;
+
+  /// Throws std::invalid_argument when empty, the first plastic strain is not 0, the
+  /// plastic strains are not strictly ascending, or a yield stress is negative or
+  /// not finite. The deck reader should wrap the message into an InputError.
+  void validate() const;
+  /// Yield stress at equivalent plastic strain alpha >= 0.
+  Real yield(Real alpha) const;
+  /// Right derivative d(yield)/d(alpha) at alpha (0 beyond the last row).
+  Real slope(Real alpha) const;
+  /// Index k of the segment [points[k], points[k+1]) containing alpha; returns
+  /// points.size()-1 for the constant tail beyond the last row.
+  std::size_t segment(Real alpha) const;
+};
+
+/// Internal variables of one integration point.
+struct J2State {
+  Vec6 plastic_strain = Vec6::Zero();   ///< tensor shear components, trace 0
+  Real equivalent_plastic_strain = 0;   ///< alpha = integral of sqrt(2/3 deps_p:deps_p)
+};
+
+struct J2Result {
+  Vec6 stress = Vec6::Zero();
+  Mat6 tangent = Mat6::Zero();  ///< consistent (algorithmic) tangent, engineering shear
+  J2State state;                ///< trial state at the end of the increment
+  bool yielded = false;         ///< true when the return mapping was active
+  Real delta_alpha = 0;         ///< increment of equivalent plastic strain
+};
+
+/// Isotropic linear-elastic stiffness (engineering shear strain -> stress).
+Mat6 isotropic_elastic_stiffness(Real young, Real poisson);
+
+/// Von Mises equivalent of a stress vector (xx, yy, zz, xy, xz, yz).
+Real von_mises(const Vec6& stress);
+
+/// Radial return from the committed state for the total strain `strain` (engineering
+/// shear). `thermal_strain` is an isotropic thermal strain alpha_T*(T - T0) removed
+/// from the normal components before the constitutive update. The committed state is
+/// not modified; commit result.state once the global iteration has converged.
+/// Throws std::invalid_argument on bad data (E <= 0, nu outside (-1, 0.5), invalid
+/// table, softening slope <= -3G) and NonConvergence if the local iteration fails.
+J2Result j2_return_map(Real young, Real poisson, const HardeningTable& table,
+                       const J2State& committed, const Vec6& strain,
+                       Real thermal_strain = 0);
+
+}  // namespace kontakt::material
