@@ -9,6 +9,8 @@
 #include <cmath>
 #include <memory>
 
+#include "analysis/element_access.hpp"
+#include "analysis/step_loads.hpp"
 #include "analysis/support_check.hpp"
 #include "assembly/assembler.hpp"
 #include "core/parallel.hpp"
@@ -21,82 +23,6 @@ namespace kontakt::analysis {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-MatX3 element_coords(const model::Model& model, const model::Element& el) {
-  MatX3 X(el.nodes.size(), 3);
-  for (std::size_t a = 0; a < el.nodes.size(); ++a) X.row(a) = model.mesh.coords.row(el.nodes[a]);
-  return X;
-}
-
-element::LinearElastic element_material(const model::Model& model, const model::Element& el) {
-  const auto& mat = model.materials[model.sections[el.section].material];
-  return {mat.young, mat.poisson, mat.expansion.value_or(0.0)};
-}
-
-/// Temperature change from the initial state at every node for this step (zero if none).
-VecX temperature_change(const model::Model& model, const model::Step& step) {
-  const int n = model.n_nodes();
-  if (step.temperatures.size() == 0) return VecX::Zero(n);
-  VecX initial = model.initial_temperatures.size() ? model.initial_temperatures : VecX::Zero(n);
-  return step.temperatures - initial;
-}
-
-/// Runs an element kernel; a failure inside it (e.g. an inverted element) names the element.
-template <class Fn>
-void naming_element(const model::Element& el, Fn&& fn) {
-  try {
-    fn();
-  } catch (const SolverError& e) {
-    throw SolverError("element " + std::to_string(el.id) + " (" +
-                      std::string(element::traits(el.type).name) + "): " + e.what());
-  }
-}
-
-VecX element_values(const model::Element& el, const VecX& nodal) {
-  VecX v(el.nodes.size());
-  for (std::size_t a = 0; a < el.nodes.size(); ++a) v[a] = nodal[el.nodes[a]];
-  return v;
-}
-
-/// Amplitude factor at the end of a step of length `period` that ends at `total_time`.
-Real amplitude_at_end(const model::Model& model, int amplitude, Real period, Real total_time) {
-  if (amplitude < 0) return 1.0;
-  const auto& amp = model.amplitudes[amplitude];
-  return amp.value_at(amp.total_time ? total_time : period);
-}
-
-/// External nodal forces of the step's concentrated and pressure loads (3 * n_nodes).
-VecX external_forces(const model::Model& model, const model::Step& step, Real period,
-                     Real total_time) {
-  VecX f = VecX::Zero(3 * model.n_nodes());
-  for (const auto& load : step.cloads)
-    f[3 * load.node + load.dof] +=
-        load.value * amplitude_at_end(model, load.amplitude, period, total_time);
-  for (const auto& load : step.pressures) {
-    const auto& el = model.mesh.elements[load.face.element];
-    VecX fe;
-    element::pressure_load(el.type, load.face.face, element_coords(model, el),
-                           load.value * amplitude_at_end(model, load.amplitude, period, total_time),
-                           fe);
-    for (std::size_t a = 0; a < el.nodes.size(); ++a)
-      for (int c = 0; c < 3; ++c) f[3 * el.nodes[a] + c] += fe[3 * a + c];
-  }
-  return f;
-}
-
-/// Values of the prescribed dofs; `u_previous` is the previous step's displacement (for FIXED).
-VecX prescribed_values(const model::Model& model, const model::Step& step,
-                       const assembly::DofMap& dofs, Real period, Real total_time,
-                       const VecX& u_previous) {
-  VecX g = VecX::Zero(dofs.n_prescribed());
-  for (const auto& bc : step.boundaries) {  // later entries win, as in ccx
-    const int d = 3 * bc.node + bc.dof;
-    g[dofs.prescribed_slot(d)] =
-        bc.hold_previous ? u_previous[d]
-                         : bc.value * amplitude_at_end(model, bc.amplitude, period, total_time);
-  }
-  return g;
-}
 
 /// Strains, stresses, energies and nodal forces for the full displacement vector u.
 output::Frame recover_frame(const model::Model& model, const VecX& u, const VecX& dT,
@@ -122,8 +48,7 @@ output::Frame recover_frame(const model::Model& model, const VecX& u, const VecX
     for (std::size_t e = begin; e < end; ++e) {
       const auto& el = elements[e];
       const MatX3 X = element_coords(model, el);
-      MatX3 ue(el.nodes.size(), 3);
-      for (std::size_t a = 0; a < el.nodes.size(); ++a) ue.row(a) = frame.U.row(el.nodes[a]);
+      const MatX3 ue = element_displacements(el, u);
       naming_element(el, [&] {
         element::recover(el.type, X, element_material(model, el), ue, element_values(el, dT), r);
       });
@@ -175,15 +100,6 @@ void require_linear(const model::Model& model) {
                        "NLGEOM (geometric nonlinearity) is not supported yet");
   if (model.steps.empty())
     throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
-}
-
-/// A load on a node that no element or equation reaches would silently vanish: refuse it.
-void require_loads_reach_elements(const model::Model& model, const assembly::DofMap& dofs,
-                                  const VecX& f) {
-  for (int d = 0; d < dofs.n_dofs(); ++d)
-    if (f[d] != 0 && dofs.terms_begin(d) == dofs.terms_end(d))
-      throw SolverError("a load acts on " + dofs.describe(model, d) +
-                        ", which belongs to no element: the load would have no effect");
 }
 
 std::string singular_mode_warning(const model::Model& model, const assembly::DofMap& dofs,
@@ -246,7 +162,9 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
 
     const VecX dT = temperature_change(model, step);
     const bool has_thermal_strain = dT.size() > 0 && dT.cwiseAbs().maxCoeff() > 0;
-    const VecX g = prescribed_values(model, step, *dofs, period, total_time, u_previous);
+    // A linear step is solved once, at its end: every load at its full value.
+    const VecX g =
+        prescribed_values(model, step, *dofs, period, total_time, 1.0, u_previous, u_previous);
     assembly::ReducedSystem system;
     assembly::assemble(
         model, *plan, g,
@@ -263,7 +181,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
           });
         },
         threads, system);
-    const VecX f_ext = external_forces(model, step, period, total_time);
+    const VecX f_ext = external_forces(model, step, period, total_time, 1.0);
     require_loads_reach_elements(model, *dofs, f_ext);
     assembly::add_nodal_forces(*dofs, f_ext, system.rhs);
 

@@ -1,0 +1,53 @@
+// Gathering one element's data from the model, shared by the analysis drivers.
+#pragma once
+
+#include <string>
+
+#include "element/solid_linear.hpp"
+#include "model/model.hpp"
+
+namespace kontakt::analysis {
+
+inline MatX3 element_coords(const model::Model& model, const model::Element& el) {
+  MatX3 X(el.nodes.size(), 3);
+  for (std::size_t a = 0; a < el.nodes.size(); ++a) X.row(a) = model.mesh.coords.row(el.nodes[a]);
+  return X;
+}
+
+inline const model::Material& element_material_def(const model::Model& model,
+                                                   const model::Element& el) {
+  return model.materials[model.sections[el.section].material];
+}
+
+inline element::LinearElastic element_material(const model::Model& model,
+                                               const model::Element& el) {
+  const auto& mat = element_material_def(model, el);
+  return {mat.young, mat.poisson, mat.expansion.value_or(0.0)};
+}
+
+/// Nodal values of one element gathered from a per-node vector.
+inline VecX element_values(const model::Element& el, const VecX& nodal) {
+  VecX v(el.nodes.size());
+  for (std::size_t a = 0; a < el.nodes.size(); ++a) v[a] = nodal[el.nodes[a]];
+  return v;
+}
+
+/// Displacements of one element's nodes (n x 3) from the full dof vector.
+inline MatX3 element_displacements(const model::Element& el, const VecX& u) {
+  MatX3 ue(el.nodes.size(), 3);
+  for (std::size_t a = 0; a < el.nodes.size(); ++a) ue.row(a) = u.segment<3>(3 * el.nodes[a]);
+  return ue;
+}
+
+/// Runs an element kernel; a failure inside it (e.g. an inverted element) names the element.
+template <class Fn>
+void naming_element(const model::Element& el, Fn&& fn) {
+  try {
+    fn();
+  } catch (const SolverError& e) {
+    throw SolverError("element " + std::to_string(el.id) + " (" +
+                      std::string(element::traits(el.type).name) + "): " + e.what());
+  }
+}
+
+}  // namespace kontakt::analysis

@@ -1,0 +1,71 @@
+#include "analysis/step_loads.hpp"
+
+#include "analysis/element_access.hpp"
+
+namespace kontakt::analysis {
+
+Real amplitude_factor(const model::Model& model, int amplitude, Real step_time, Real total_time) {
+  if (amplitude < 0) return 1.0;
+  const auto& amp = model.amplitudes[amplitude];
+  return amp.value_at(amp.total_time ? total_time : step_time);
+}
+
+namespace {
+Real load_factor(const model::Model& model, int amplitude, Real step_time, Real total_time,
+                 Real ramp) {
+  return amplitude < 0 ? ramp : amplitude_factor(model, amplitude, step_time, total_time);
+}
+}  // namespace
+
+VecX external_forces(const model::Model& model, const model::Step& step, Real step_time,
+                     Real total_time, Real ramp) {
+  VecX f = VecX::Zero(3 * model.n_nodes());
+  for (const auto& load : step.cloads)
+    f[3 * load.node + load.dof] +=
+        load.value * load_factor(model, load.amplitude, step_time, total_time, ramp);
+  for (const auto& load : step.pressures) {
+    const auto& el = model.mesh.elements[load.face.element];
+    VecX fe;
+    element::pressure_load(el.type, load.face.face, element_coords(model, el),
+                           load.value * load_factor(model, load.amplitude, step_time, total_time, ramp),
+                           fe);
+    for (std::size_t a = 0; a < el.nodes.size(); ++a)
+      for (int c = 0; c < 3; ++c) f[3 * el.nodes[a] + c] += fe[3 * a + c];
+  }
+  return f;
+}
+
+VecX prescribed_values(const model::Model& model, const model::Step& step,
+                       const assembly::DofMap& dofs, Real step_time, Real total_time, Real ramp,
+                       const VecX& u_start, const VecX& u_previous) {
+  VecX g = VecX::Zero(dofs.n_prescribed());
+  for (const auto& bc : step.boundaries) {  // later entries win, as in ccx
+    const int d = 3 * bc.node + bc.dof;
+    Real value;
+    if (bc.hold_previous)
+      value = u_previous[d];
+    else if (bc.amplitude >= 0)
+      value = bc.value * amplitude_factor(model, bc.amplitude, step_time, total_time);
+    else
+      value = u_start[d] + ramp * (bc.value - u_start[d]);
+    g[dofs.prescribed_slot(d)] = value;
+  }
+  return g;
+}
+
+VecX temperature_change(const model::Model& model, const model::Step& step) {
+  const int n = model.n_nodes();
+  if (step.temperatures.size() == 0) return VecX::Zero(n);
+  VecX initial = model.initial_temperatures.size() ? model.initial_temperatures : VecX::Zero(n);
+  return step.temperatures - initial;
+}
+
+void require_loads_reach_elements(const model::Model& model, const assembly::DofMap& dofs,
+                                  const VecX& f) {
+  for (int d = 0; d < dofs.n_dofs(); ++d)
+    if (f[d] != 0 && dofs.terms_begin(d) == dofs.terms_end(d))
+      throw SolverError("a load acts on " + dofs.describe(model, d) +
+                        ", which belongs to no element: the load would have no effect");
+}
+
+}  // namespace kontakt::analysis

@@ -1,0 +1,33 @@
+// What a step prescribes at a given time: external nodal forces, prescribed displacement
+// values and the temperature field. Loads without an amplitude take their full value at the
+// step end (linear analysis) or ramp from the previous step's end values (nonlinear).
+#pragma once
+
+#include "assembly/dof_map.hpp"
+#include "model/model.hpp"
+
+namespace kontakt::analysis {
+
+/// The amplitude's factor at a time (1 when `amplitude` is -1).
+Real amplitude_factor(const model::Model& model, int amplitude, Real step_time, Real total_time);
+
+/// Nodal forces (3 * n_nodes) of *CLOAD and *DLOAD. Loads with an amplitude are evaluated at
+/// the given time; loads without one at `ramp` times their value.
+VecX external_forces(const model::Model& model, const model::Step& step, Real step_time,
+                     Real total_time, Real ramp);
+
+/// Values of the prescribed dofs at a time: amplitude-driven ones evaluated there, the others
+/// `start + ramp * (value - start)` with start = `u_start` at that dof; FIXED ones hold
+/// `u_previous` (the previous step's end).
+VecX prescribed_values(const model::Model& model, const model::Step& step,
+                       const assembly::DofMap& dofs, Real step_time, Real total_time, Real ramp,
+                       const VecX& u_start, const VecX& u_previous);
+
+/// Temperature change from the initial state at every node at the step end (zero if none).
+VecX temperature_change(const model::Model& model, const model::Step& step);
+
+/// A load on a node that no element or equation reaches would silently vanish: refuse it.
+void require_loads_reach_elements(const model::Model& model, const assembly::DofMap& dofs,
+                                  const VecX& f);
+
+}  // namespace kontakt::analysis
