@@ -1,0 +1,15 @@
+// Small-strain recovery of a displacement state: what the writers need from a linear solve.
+#pragma once
+
+#include "model/model.hpp"
+#include "output/frame.hpp"
+
+namespace kontakt::analysis {
+
+/// Strains, stresses, energies, volumes and nodal forces (summed element internal forces) for
+/// the full displacement vector u and nodal temperature changes dT, plus nodal averages of the
+/// extrapolated stresses and strains. Elements run in parallel on `threads`.
+output::Frame small_strain_frame(const model::Model& model, const VecX& u, const VecX& dT,
+                                 int threads);
+
+}  // namespace kontakt::analysis
