@@ -5,6 +5,8 @@
 // reads the deck, runs the analysis its plan calls for, and writes DIR/MODEL.dat (ccx layout),
 // DIR/MODEL.hdf + DIR/MODEL.xdmf (ParaView) and DIR/MODEL.log.jsonl (events).
 // Exit codes: 0 converged, 2 input error, 3 not converged, 4 numerical or internal error.
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -13,6 +15,7 @@
 
 #include "analysis/event_log.hpp"
 #include "analysis/linear_static.hpp"
+#include "analysis/nonlinear_static.hpp"
 #include "app/progress_printer.hpp"
 #include "app/result_writers.hpp"
 #include "core/error.hpp"
@@ -26,6 +29,10 @@ namespace {
 
 constexpr int kExitOk = 0, kExitUsage = 1, kExitInput = 2, kExitNotConverged = 3, kExitError = 4;
 
+/// Set by SIGINT/SIGTERM; the Newton driver polls it once per iteration and stops cleanly.
+std::atomic<bool> g_cancel{false};
+extern "C" void request_cancel(int) { g_cancel.store(true); }
+
 void print_usage(std::FILE* out) {
   std::fputs(
       "usage: kontakt solve MODEL.inp [-o DIR] [--threads N] [--quiet]\n"
@@ -35,7 +42,8 @@ void print_usage(std::FILE* out) {
       "  --threads N  threads for assembly, recovery and the factorisation (default: all cores)\n"
       "  --quiet      no progress output\n"
       "\n"
-      "exit codes: 0 converged, 2 input error, 3 not converged, 4 numerical/internal error\n",
+      "exit codes: 0 converged, 2 input error, 3 not converged or cancelled (converged increments\n"
+      "kept), 4 numerical/internal error\n",
       out);
 }
 
@@ -117,13 +125,31 @@ int run_solve(const SolveArgs& args) {
     const model::Model model = inp::read_deck(args.deck);
     for (const auto& w : model.warnings) std::fprintf(stderr, "kontakt: warning: %s\n", w.c_str());
     app::ResultWriters writers(model, args.out_dir, job);
-    analysis::run_linear_static(model, {.threads = args.threads}, writers, events);
+    // The results of every converged increment are kept, whatever ends the run.
+    try {
+      if (analysis::needs_newton(model)) {
+        analysis::NonlinearOptions options;
+        options.threads = args.threads;
+        options.cancel = &g_cancel;
+        analysis::run_nonlinear_static(model, options, writers, events);
+      } else {
+        analysis::run_linear_static(model, {.threads = args.threads}, writers, events);
+      }
+    } catch (const NonConvergence&) {
+      writers.finish();
+      throw;
+    } catch (const analysis::Cancelled&) {
+      writers.finish();
+      throw;
+    }
     writers.finish();
     return kExitOk;
   } catch (const InputError& e) {
     return fail("input_error", e.what(), kExitInput);
   } catch (const NonConvergence& e) {
     return fail("not_converged", e.what(), kExitNotConverged);
+  } catch (const analysis::Cancelled& e) {
+    return fail("cancelled", e.what(), kExitNotConverged);
   } catch (const std::exception& e) {
     return fail("error", e.what(), kExitError);
   }
@@ -147,5 +173,7 @@ int main(int argc, char** argv) {
   }
   SolveArgs args;
   if (!parse_solve_args(argc, argv, args)) return kExitUsage;
+  std::signal(SIGINT, request_cancel);
+  std::signal(SIGTERM, request_cancel);
   return run_solve(args);
 }

@@ -41,7 +41,8 @@ TEST(inpMesh, NodesElementsMaterialSection) {
   EXPECT_EQ(m.sections[0].material, 0);
   EXPECT_EQ(m.node_sets.at("NALL").nodes.size(), 12u);
   EXPECT_EQ(m.element_sets.at("EALL").elements.size(), 2u);
-  EXPECT_EQ(m.warnings.size(), 1u);  // *STATIC without a data line
+  // *STATIC without a data line warns only in nonlinear steps (the driver says so then).
+  EXPECT_TRUE(m.warnings.empty());
 }
 
 TEST(inpMesh, DensityAndExpansion) {

@@ -1,0 +1,295 @@
+// Nonlinear static driver. For each step:
+//   loads and prescribed values ramp from the previous step's end values to the step's own
+//   (amplitudes, where given, drive them instead); IncrementControl proposes increments.
+// For each increment:
+//   the prescribed dofs jump to their new values, the free ones start where the last increment
+//   ended; Newton iterations solve K dx = T^T (f_ext - f_int) until Convergence says so.
+//   A cutback restores the last converged state and retries smaller.
+// On convergence the frame is handed to the writers (they decide what is due).
+#include "analysis/nonlinear_static.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "analysis/element_access.hpp"
+#include "analysis/step_loads.hpp"
+#include "analysis/support_check.hpp"
+#include "assembly/assembler.hpp"
+#include "core/parallel.hpp"
+#include "element/total_lagrangian.hpp"
+#include "linsolve/spd_solve.hpp"
+#include "nonlinear/convergence.hpp"
+#include "nonlinear/increment_control.hpp"
+
+namespace kontakt::analysis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Internal forces, tangent and the average force measure q_bar at a displacement state.
+struct Evaluation {
+  assembly::ReducedSystem system;  ///< tangent and T^T (f_ext - f_int)
+  VecX internal_force;             ///< full dof vector (reaction forces at constrained dofs)
+  Real force_average = 0;          ///< q_bar: mean |element nodal force component|
+};
+
+/// Assembles the tangent and residual at `u` (full dof vector) with temperatures `dT`.
+Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& plan,
+                    const VecX& u, const VecX& dT, const VecX& f_ext, int threads) {
+  const auto& elements = model.mesh.elements;
+  Evaluation ev;
+  std::vector<VecX> f_el(elements.size());
+  // The assembler scatters K and -f_int (as the element "load"); prescribed values are already
+  // in u, so the prescribed-value vector passed to it is zero.
+  assembly::assemble(
+      model, plan, VecX::Zero(plan.dofs->n_prescribed()),
+      [&](int e, MatX& K, VecX& f) {
+        const auto& el = elements[e];
+        element::NlgeomResult r;
+        naming_element(el, [&] {
+          element::nlgeom_element(el.type, element_coords(model, el), element_material(model, el),
+                                  element_displacements(el, u), element_values(el, dT), true, r);
+        });
+        K = std::move(r.tangent);
+        f = -r.internal_force;
+        f_el[e] = std::move(r.internal_force);
+      },
+      threads, ev.system);
+  ev.internal_force = VecX::Zero(u.size());
+  Real sum = 0;
+  Index count = 0;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto& nodes = elements[e].nodes;
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      for (int c = 0; c < 3; ++c) ev.internal_force[3 * nodes[a] + c] += f_el[e][3 * a + c];
+    sum += f_el[e].cwiseAbs().sum();
+    count += f_el[e].size();
+  }
+  ev.force_average = count ? sum / static_cast<Real>(count) : 0;
+  assembly::add_nodal_forces(*plan.dofs, f_ext, ev.system.rhs);
+  return ev;
+}
+
+/// Cauchy stress, Green-Lagrange strain and nodal forces of a converged state.
+output::Frame nlgeom_frame(const model::Model& model, const VecX& u, const VecX& dT,
+                           const VecX& internal_force, int threads) {
+  const auto& elements = model.mesh.elements;
+  const int n_el = model.n_elements(), n_nodes = model.n_nodes();
+  output::Frame frame;
+  frame.U = Eigen::Map<const MatX3>(u.data(), n_nodes, 3);
+  frame.RF = Eigen::Map<const MatX3>(internal_force.data(), n_nodes, 3);
+  frame.ip_offset.assign(n_el + 1, 0);
+  for (int e = 0; e < n_el; ++e)
+    frame.ip_offset[e + 1] = frame.ip_offset[e] + element::traits(elements[e].type).n_ip;
+  const Index n_ip = frame.ip_offset.back();
+  frame.S.resize(n_ip, 6);
+  frame.E.resize(n_ip, 6);
+  frame.ENER.resize(n_ip);
+  frame.ip_volume.resize(n_ip);
+  frame.EVOL.resize(n_el);
+  std::vector<MatX> S_node(n_el), E_node(n_el);
+  parallel_chunks(n_el, threads, [&](std::size_t begin, std::size_t end, int) {
+    element::NlgeomResult r;
+    for (std::size_t e = begin; e < end; ++e) {
+      const auto& el = elements[e];
+      const MatX3 X = element_coords(model, el);
+      naming_element(el, [&] {
+        element::nlgeom_element(el.type, X, element_material(model, el),
+                                element_displacements(el, u), element_values(el, dT), false, r);
+      });
+      const Index first = frame.ip_offset[e], count = frame.ip_offset[e + 1] - first;
+      frame.S.middleRows(first, count) = r.cauchy;
+      frame.E.middleRows(first, count) = r.green_lagrange;
+      frame.ENER.segment(first, count) = r.energy_density;
+      frame.ip_volume.segment(first, count) = element::ip_volumes(el.type, X);
+      frame.EVOL[e] = frame.ip_volume.segment(first, count).sum();
+      const MatX& to_nodes = element::ip_to_node_extrapolation(el.type);
+      S_node[e] = to_nodes * r.cauchy;
+      E_node[e] = to_nodes * r.green_lagrange;
+    }
+  });
+  frame.S_nodal = MatX6::Zero(n_nodes, 6);
+  frame.E_nodal = MatX6::Zero(n_nodes, 6);
+  VecX count = VecX::Zero(n_nodes);
+  for (int e = 0; e < n_el; ++e)
+    for (std::size_t a = 0; a < elements[e].nodes.size(); ++a) {
+      const int n = elements[e].nodes[a];
+      frame.S_nodal.row(n) += S_node[e].row(a);
+      frame.E_nodal.row(n) += E_node[e].row(a);
+      count[n] += 1;
+    }
+  for (int n = 0; n < n_nodes; ++n)
+    if (count[n] > 0) {
+      frame.S_nodal.row(n) /= count[n];
+      frame.E_nodal.row(n) /= count[n];
+    }
+  return frame;
+}
+
+nonlinear::StepTiming step_timing(const model::Step& step) {
+  const auto& p = step.procedure;
+  return {.period = p.period,
+          .initial_increment = p.initial_increment,
+          .min_increment = p.min_increment.value_or(0),
+          .max_increment = p.max_increment.value_or(0),
+          .direct = p.direct,
+          .max_increments = step.max_increments};
+}
+
+Real max_abs(const VecX& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0; }
+
+}  // namespace
+
+bool needs_newton(const model::Model& model) {
+  for (const auto& step : model.steps)
+    if (step.nlgeom) return true;
+  return false;
+}
+
+void run_nonlinear_static(const model::Model& model, const NonlinearOptions& options,
+                          FrameSink& frames, EventSink& events) {
+  if (model.steps.empty())
+    throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
+  const int threads = resolve_threads(options.threads);
+  const auto t0 = Clock::now();
+  auto wall = [&] { return std::chrono::duration<Real>(Clock::now() - t0).count(); };
+
+  const int n_dofs = 3 * model.n_nodes();
+  VecX u = VecX::Zero(n_dofs);             // converged displacement
+  VecX f_ext_prev = VecX::Zero(n_dofs);    // external forces at the previous step's end
+  VecX dT_prev = VecX::Zero(model.n_nodes());
+  Real total_time_start = 0, last_q_bar = 0, max_mises = 0;
+  int total_iterations = 0;
+  std::unique_ptr<assembly::DofMap> dofs;
+  std::unique_ptr<assembly::AssemblyPlan> plan;
+  auto solver = linsolve::make_cholmod_solver();
+  linsolve::SpdSolve spd(*solver);
+
+  for (std::size_t s = 0; s < model.steps.size(); ++s) {
+    const model::Step& step = model.steps[s];
+    const int step_no = static_cast<int>(s) + 1;
+    events.on_event({.kind = Event::Kind::Step, .step = step_no, .wall_time = wall()});
+    if (!step.procedure.data_line_given)
+      events.on_event({.kind = Event::Kind::Warning, .step = step_no, .wall_time = wall(),
+                       .message = step.where.file + ":" + std::to_string(step.where.line) +
+                                  ": *STATIC has no data line: one increment of 1 over a step "
+                                  "time of 1"});
+    auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries);
+    if (!dofs || !dofs->same_structure(*step_dofs)) {
+      dofs = std::move(step_dofs);
+      check_bodies_supported(model, *dofs);
+      plan = std::make_unique<assembly::AssemblyPlan>(
+          assembly::make_plan(model, *dofs, /*symmetric=*/true, threads));
+      solver->analyze(plan->pattern);
+    }
+    const Real period = step.procedure.period;
+    const VecX u_step_start = u;
+    const VecX dT_end = temperature_change(model, step);
+    // Loads without amplitude ramp from the previous step's end values to this step's.
+    const VecX f_ramped_end = external_forces(model, step, period, total_time_start + period, 1.0);
+    require_loads_reach_elements(model, *dofs, f_ramped_end);
+    auto loads_at = [&](Real t) {
+      const Real ramp = t / period;
+      return VecX(f_ext_prev * (1 - ramp) +
+                  external_forces(model, step, t, total_time_start + t, ramp));
+    };
+
+    nonlinear::Convergence convergence(options.controls, last_q_bar);
+    nonlinear::IncrementControl increments(step_timing(step), options.controls);
+    VecX x = VecX::Zero(dofs->n_equations());
+    for (int eq = 0; eq < dofs->n_equations(); ++eq) x[eq] = u[dofs->equation_dof(eq)];
+
+    while (!increments.finished()) {
+      const Real t = increments.step_time() + increments.increment();
+      const Real ramp = t / period;
+      const VecX g = prescribed_values(model, step, *dofs, t, total_time_start + t, ramp,
+                                       u_step_start, u_step_start);
+      const VecX f_ext = loads_at(t);
+      const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
+      convergence.begin_increment();
+      VecX x_trial = x;
+      VecX u_trial = dofs->expand(x_trial, g);
+      Evaluation ev = evaluate(model, *plan, u_trial, dT, f_ext, threads);
+      for (int it = 1;; ++it) {
+        if (options.cancel && options.cancel->load())
+          throw Cancelled("cancelled in step " + std::to_string(step_no) + ", increment " +
+                          std::to_string(increments.increment_number()));
+        linsolve::SpdSolveReport report;
+        VecX dx;
+        nonlinear::Verdict verdict;
+        try {
+          spd.factorise(plan->pattern, ev.system.values, report);
+          dx = spd.solve(plan->pattern, ev.system.values, ev.system.rhs, report);
+          x_trial += dx;
+          const VecX u_new = dofs->expand(x_trial, g);
+          const Real c_max = max_abs(u_new - u_trial);
+          u_trial = u_new;
+          ev = evaluate(model, *plan, u_trial, dT, f_ext, threads);
+          verdict = convergence.check(
+              it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});
+        } catch (const SolverError& e) {  // singular tangent, inverted element: cut back
+          verdict.kind = nonlinear::Verdict::Kind::Cutback;
+          verdict.cutback_factor = options.controls.divergence_cutback;
+          verdict.reason = e.what();
+        }
+        ++total_iterations;
+        events.on_event({.kind = Event::Kind::Iteration, .step = step_no,
+                         .increment = increments.increment_number(),
+                         .attempt = increments.attempt(), .iteration = it,
+                         .step_time = t, .total_time = total_time_start + t,
+                         .dt = increments.increment(),
+                         .residual = 100 * verdict.residual_ratio,
+                         .correction = 100 * verdict.correction_ratio, .wall_time = wall()});
+        if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
+          convergence.commit_increment();
+          x = x_trial;
+          u = u_trial;
+          const int increment_no = increments.increment_number();
+          const Real dt = increments.increment();
+          increments.converged(it);
+          output::Frame frame = nlgeom_frame(model, u, dT, ev.internal_force, threads);
+          frame.step = step_no;
+          frame.increment = increment_no;
+          frame.step_time = t;
+          frame.total_time = total_time_start + t;
+          frame.is_step_end = increments.finished();
+          for (Index k = 0; k < frame.S.rows(); ++k) {
+            const auto sr = frame.S.row(k);
+            const Real a = sr[0] - sr[1], b = sr[1] - sr[2], c = sr[2] - sr[0];
+            max_mises = std::max(max_mises, std::sqrt(0.5 * (a * a + b * b + c * c) +
+                                                      3 * sr.tail<3>().squaredNorm()));
+          }
+          events.on_event({.kind = Event::Kind::Increment, .step = step_no,
+                           .increment = increment_no, .attempt = 1, .iteration = it,
+                           .step_time = t, .total_time = total_time_start + t, .dt = dt,
+                           .wall_time = wall()});
+          frames.on_frame(step, frame);
+          break;
+        }
+        if (verdict.kind == nonlinear::Verdict::Kind::Cutback) {
+          events.on_event({.kind = Event::Kind::Cutback, .step = step_no,
+                           .increment = increments.increment_number(),
+                           .attempt = increments.attempt(), .iteration = it,
+                           .wall_time = wall(), .message = verdict.reason});
+          increments.cut_back(verdict.cutback_factor, verdict.reason);
+          break;
+        }
+      }
+    }
+    f_ext_prev = loads_at(period);
+    dT_prev = dT_end;
+    last_q_bar = convergence.last_force_average();
+    total_time_start += period;
+  }
+  Event done{.kind = Event::Kind::Done, .wall_time = wall(), .status = "converged"};
+  done.iterations = total_iterations;
+  done.max_displacement = 0;
+  for (int n = 0; n < model.n_nodes(); ++n)
+    done.max_displacement = std::max(done.max_displacement, u.segment<3>(3 * n).norm());
+  done.max_mises = max_mises;
+  events.on_event(done);
+}
+
+}  // namespace kontakt::analysis

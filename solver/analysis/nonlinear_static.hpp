@@ -1,0 +1,34 @@
+// Nonlinear static analysis: steps -> increments -> Newton iterations, with ccx's convergence
+// criteria and automatic incrementation (nonlinear/convergence.hpp, increment_control.hpp).
+// Used for steps with NLGEOM; the linear driver keeps models that need no iteration.
+#pragma once
+
+#include <atomic>
+
+#include "analysis/events.hpp"
+#include "analysis/linear_static.hpp"
+#include "nonlinear/solution_controls.hpp"
+
+namespace kontakt::analysis {
+
+struct NonlinearOptions {
+  int threads = 0;                                ///< 0 = all cores
+  const std::atomic<bool>* cancel = nullptr;      ///< polled once per iteration
+  nonlinear::SolutionControls controls;
+};
+
+/// The run was cancelled through NonlinearOptions::cancel; converged frames are kept.
+class Cancelled : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Solves every step. Throws NonConvergence when an increment cannot be completed (after the
+/// frames of every converged increment were handed to `frames`), Cancelled, SolverError.
+void run_nonlinear_static(const model::Model& model, const NonlinearOptions& options,
+                          FrameSink& frames, EventSink& events);
+
+/// True when some step of the model needs Newton iterations (NLGEOM).
+bool needs_newton(const model::Model& model);
+
+}  // namespace kontakt::analysis

@@ -1,0 +1,155 @@
+// The Newton driver on small NLGEOM decks with closed-form answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "analysis/nonlinear_static.hpp"
+#include "inp/read_deck.hpp"
+
+using namespace kontakt;
+
+namespace {
+
+/// Unit cube, one C3D8, E = 1000, nu = 0.25, symmetry rollers; `rest` appended.
+std::string cube(const std::string& rest) {
+  return R"(*NODE, NSET=NALL
+1, 0, 0, 0
+2, 1, 0, 0
+3, 1, 1, 0
+4, 0, 1, 0
+5, 0, 0, 1
+6, 1, 0, 1
+7, 1, 1, 1
+8, 0, 1, 1
+*ELEMENT, TYPE=C3D8, ELSET=EALL
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*NSET, NSET=X0
+1, 4, 5, 8
+*NSET, NSET=X1
+2, 3, 6, 7
+*MATERIAL, NAME=M
+*ELASTIC
+1000, 0.25
+*SOLID SECTION, ELSET=EALL, MATERIAL=M
+*BOUNDARY
+X0, 1
+1, 2, 3
+2, 2, 3
+4, 3
+5, 2
+)" + rest;
+}
+
+struct Collect : analysis::FrameSink, analysis::EventSink {
+  std::vector<output::Frame> frames;
+  std::vector<analysis::Event> events;
+  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
+  void on_event(const analysis::Event& e) override { events.push_back(e); }
+};
+
+Collect solve(const std::string& deck, analysis::NonlinearOptions options = {}) {
+  const model::Model m = inp::read_deck_text(deck, "cube.inp");
+  Collect c;
+  analysis::run_nonlinear_static(m, options, c, c);
+  return c;
+}
+
+}  // namespace
+
+TEST(NonlinearStatic, LargeUniaxialStretchMatchesStVenantKirchhoff) {
+  // Stretch 1.5 with free lateral faces: S11 = E * E11, E22 = -nu E11, Cauchy = F S F^T / J.
+  const auto c = solve(cube(R"(*STEP, NLGEOM
+*STATIC
+0.25, 1.0
+*BOUNDARY
+X1, 1, 1, 0.5
+*END STEP
+)"));
+  ASSERT_FALSE(c.frames.empty());
+  const auto& f = c.frames.back();
+  const Real E11 = (1.5 * 1.5 - 1) / 2, S11 = 1000 * E11, E22 = -0.25 * E11;
+  const Real lateral = std::sqrt(1 + 2 * E22), J = 1.5 * lateral * lateral;
+  for (Index k = 0; k < f.S.rows(); ++k) {
+    EXPECT_NEAR(f.S(k, 0), 1.5 * 1.5 * S11 / J, 1e-6 * S11);
+    EXPECT_NEAR(f.S(k, 1), 0.0, 1e-6 * S11);
+    EXPECT_NEAR(f.E(k, 0), E11, 1e-9);
+    EXPECT_NEAR(f.E(k, 1), E22, 1e-9);
+  }
+  EXPECT_NEAR(f.U(6, 1), lateral - 1, 1e-9);  // node 7 contracts laterally
+  // The reactions on x = 0 carry the first Piola-Kirchhoff force F11 * S11 * A0.
+  Real reaction = 0;
+  for (int n : {0, 3, 4, 7}) reaction += f.RF(n, 0);
+  EXPECT_NEAR(reaction, -1.5 * S11, 1e-6 * S11);
+  EXPECT_DOUBLE_EQ(f.total_time, 1.0);
+  EXPECT_TRUE(f.is_step_end);
+  EXPECT_GE(c.frames.size(), 2u);  // several increments
+}
+
+TEST(NonlinearStatic, NewtonConvergesQuadratically) {
+  const auto c = solve(cube(R"(*STEP, NLGEOM
+*STATIC
+1.0, 1.0
+*CLOAD
+X1, 1, 100.
+*END STEP
+)"));
+  std::vector<Real> residuals;
+  for (const auto& e : c.events)
+    if (e.kind == analysis::Event::Kind::Iteration && e.increment == 1 && e.attempt == 1)
+      residuals.push_back(e.residual);
+  ASSERT_GE(residuals.size(), 3u);
+  // Each residual is at most a constant times the square of the previous (relative to q~).
+  for (std::size_t k = 1; k + 1 < residuals.size(); ++k)
+    if (residuals[k] > 1e-8) {
+      EXPECT_LT(residuals[k + 1] / 100, 10 * std::pow(residuals[k] / 100, 2)) << k;
+    }
+}
+
+TEST(NonlinearStatic, SmallLoadReproducesTheLinearSolution) {
+  const auto c = solve(cube(R"(*STEP, NLGEOM
+*STATIC
+*CLOAD
+X1, 1, 1e-4
+*END STEP
+)"));
+  // Linear: sigma_xx = 4e-4 on the unit face, eps_xx = 4e-7, u_x = 4e-7.
+  EXPECT_NEAR(c.frames.back().U(1, 0), 4e-7, 1e-12);
+}
+
+TEST(NonlinearStatic, ElasticAnswerDoesNotDependOnTheIncrements) {
+  const std::string tail = R"(
+*CLOAD
+X1, 1, 150.
+*END STEP
+)";
+  // Tight tolerances, so that what remains is the path (none for elasticity), not ccx's
+  // default residual tolerance of 0.5 %.
+  analysis::NonlinearOptions tight;
+  tight.controls.residual_tolerance = 1e-10;
+  tight.controls.correction_tolerance = 1e-10;
+  const auto one = solve(cube("*STEP, NLGEOM\n*STATIC, DIRECT\n1.0, 1.0" + tail), tight);
+  const auto many = solve(cube("*STEP, NLGEOM\n*STATIC, DIRECT\n0.1, 1.0" + tail), tight);
+  EXPECT_EQ(many.frames.size(), 10u);
+  EXPECT_NEAR(one.frames.back().U(1, 0), many.frames.back().U(1, 0), 1e-9);
+}
+
+TEST(NonlinearStatic, CancellationStopsWithinAnIteration) {
+  std::atomic<bool> cancel{true};
+  analysis::NonlinearOptions options;
+  options.cancel = &cancel;
+  EXPECT_THROW(solve(cube("*STEP, NLGEOM\n*STATIC\n*CLOAD\nX1, 1, 10.\n*END STEP\n"), options),
+               analysis::Cancelled);
+}
+
+TEST(NonlinearStatic, UnreachableLoadLevelEndsAsNonConvergence) {
+  // Compressing a cube to zero volume under a dead load cannot converge; the run must stop
+  // with NonConvergence after the cutbacks, never with NaN results.
+  nonlinear::SolutionControls controls;
+  controls.max_cutbacks = 2;
+  analysis::NonlinearOptions options;
+  options.controls = controls;
+  EXPECT_THROW(solve(cube("*STEP, NLGEOM\n*STATIC, DIRECT\n1.0, 1.0\n*CLOAD\nX1, 1, -1e6\n*END STEP\n"),
+                     options),
+               NonConvergence);
+}
