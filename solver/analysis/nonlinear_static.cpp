@@ -35,16 +35,18 @@ struct Evaluation {
   Real force_average = 0;          ///< q_bar: mean |element nodal force component|
 };
 
-/// Assembles the tangent and residual at `u` (full dof vector) with temperatures `dT`.
+/// Assembles the tangent and residual at `u` (full dof vector) with temperatures `dT`. A
+/// nonzero `prescribed_step` (per prescribed slot) moves the constrained dofs within the
+/// linearised system (-K g on the right-hand side), so the free dofs follow them at once.
 Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& plan,
-                    const VecX& u, const VecX& dT, const VecX& f_ext, int threads) {
+                    const VecX& u, const VecX& dT, const VecX& f_ext,
+                    const VecX& prescribed_step, int threads) {
   const auto& elements = model.mesh.elements;
   Evaluation ev;
   std::vector<VecX> f_el(elements.size());
-  // The assembler scatters K and -f_int (as the element "load"); prescribed values are already
-  // in u, so the prescribed-value vector passed to it is zero.
+  // The assembler scatters K and -f_int (as the element "load").
   assembly::assemble(
-      model, plan, VecX::Zero(plan.dofs->n_prescribed()),
+      model, plan, prescribed_step,
       [&](int e, MatX& K, VecX& f) {
         const auto& el = elements[e];
         element::NlgeomResult r;
@@ -209,24 +211,29 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       const VecX f_ext = loads_at(t);
       const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
       convergence.begin_increment();
+      // Iteration 1 starts from the converged state and moves the prescribed dofs to their new
+      // values through the linearised system; later iterations correct the free dofs only.
+      const Real t_old = increments.step_time();
+      const VecX g_old = prescribed_values(model, step, *dofs, t_old, total_time_start + t_old,
+                                           t_old / period, u_step_start, u_step_start);
       VecX x_trial = x;
-      VecX u_trial = dofs->expand(x_trial, g);
-      Evaluation ev = evaluate(model, *plan, u_trial, dT, f_ext, threads);
+      VecX u_trial = dofs->expand(x_trial, g_old);
+      const VecX no_step = VecX::Zero(dofs->n_prescribed());
+      Evaluation ev;
       for (int it = 1;; ++it) {
         if (options.cancel && options.cancel->load())
           throw Cancelled("cancelled in step " + std::to_string(step_no) + ", increment " +
                           std::to_string(increments.increment_number()));
         linsolve::SpdSolveReport report;
-        VecX dx;
         nonlinear::Verdict verdict;
         try {
+          if (it == 1) ev = evaluate(model, *plan, u_trial, dT, f_ext, g - g_old, threads);
           spd.factorise(plan->pattern, ev.system.values, report);
-          dx = spd.solve(plan->pattern, ev.system.values, ev.system.rhs, report);
-          x_trial += dx;
+          x_trial += spd.solve(plan->pattern, ev.system.values, ev.system.rhs, report);
           const VecX u_new = dofs->expand(x_trial, g);
           const Real c_max = max_abs(u_new - u_trial);
           u_trial = u_new;
-          ev = evaluate(model, *plan, u_trial, dT, f_ext, threads);
+          ev = evaluate(model, *plan, u_trial, dT, f_ext, no_step, threads);
           verdict = convergence.check(
               it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});
         } catch (const SolverError& e) {  // singular tangent, inverted element: cut back

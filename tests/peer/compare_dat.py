@@ -1,5 +1,8 @@
 """Block-by-block comparison of two .dat files in ccx's layout.
 
+For nonlinear runs (common_times_only) only the blocks at times both files printed are
+compared, and the last printed time must agree.
+
 A block is a header line (` <what> for set <SET> and time <t>`) and the rows after it. Blocks
 are matched in order and must agree in header text (the time included), row count and row keys
 (node, or element and integration point). The error of a block is
@@ -36,10 +39,34 @@ def parse_blocks(text):
     return blocks
 
 
-def compare(ours_text, reference_text):
-    """(worst error, [problem strings]); structural mismatches are problems with error inf."""
+_TIME = re.compile(r"time\s+(\S+)\s*$")
+
+
+def block_time(header):
+    m = _TIME.search(header)
+    return float(m.group(1)) if m else None
+
+
+def keep_common_times(ours, ref):
+    """Blocks of the times both files printed, and a problem when the last times differ.
+    Nonlinear runs may choose other increments than ccx; what both reached is comparable."""
+    times_o = {block_time(h) for h, _ in ours}
+    times_r = {block_time(h) for h, _ in ref}
+    problems = []
+    if ours and ref and max(times_o) != max(times_r):
+        problems.append(f"last printed time {max(times_o)} where the reference has {max(times_r)}")
+    common = times_o & times_r
+    return ([b for b in ours if block_time(b[0]) in common],
+            [b for b in ref if block_time(b[0]) in common], problems)
+
+
+def compare(ours_text, reference_text, common_times_only=False):
+    """(worst error, [problem strings]); structural mismatches are problems with error inf.
+    With common_times_only, blocks at times only one file printed are left out."""
     ours, ref = parse_blocks(ours_text), parse_blocks(reference_text)
     problems, worst = [], 0.0
+    if common_times_only:
+        ours, ref, problems = keep_common_times(ours, ref)
     if len(ours) != len(ref):
         problems.append(f"{len(ours)} blocks, reference has {len(ref)}")
     for (h_o, rows_o), (h_r, rows_r) in zip(ours, ref):

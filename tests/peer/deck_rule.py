@@ -1,12 +1,14 @@
 """The written, mechanical rule that decides which ccx decks the linear peer test runs.
 
-A deck qualifies when, after resolving *INCLUDE:
+A deck qualifies when, after resolving *INCLUDE (the nonlinear set, `nlgeom=True`, instead
+requires a *STEP with NLGEOM and compares at the times both solvers printed):
   1. every *ELEMENT TYPE is one of our solid types (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15
      C3D20 C3D20R);
   2. every keyword is in SUPPORTED, with the parameter limits below: *STEP without NLGEOM or
      PERTURBATION, *STATIC (any SOLVER=), *ELASTIC isotropic with one data line, *EXPANSION
      isotropic with one data line, *SOLID SECTION without ORIENTATION, *INITIAL CONDITIONS of
      TYPE=TEMPERATURE, *BOUNDARY and *CLOAD on dofs 1-3 only, *DLOAD of face-pressure type Pn;
+     no TIME DELAY or USER options anywhere, and in the nonlinear set no C3D8I;
   3. it prints something to compare: a *NODE PRINT of U/RF or an *EL PRINT of
      S/E/EVOL/ENER/ELSE, and nothing else.
 The first rule a deck breaks is its exclusion reason.
@@ -22,6 +24,8 @@ SUPPORTED = {
     "DLOAD", "EQUATION", "AMPLITUDE", "STEP", "STATIC", "END STEP", "NODE PRINT", "EL PRINT",
     "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT",
 }
+# Options the solver rejects wherever they appear (time-delayed loads, user subroutines).
+UNSUPPORTED_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
 NODE_PRINT_VARS = {"U", "RF"}
 EL_PRINT_VARS = {"S", "E", "EVOL", "ENER", "ELSE"}
 
@@ -78,9 +82,10 @@ def records(path, seen=None):
         yield current
 
 
-def first_violation(path):
-    """None when the deck qualifies, otherwise the first rule it breaks (a short reason)."""
-    prints = 0
+def first_violation(path, nlgeom=False):
+    """None when the deck qualifies, otherwise the first rule it breaks (a short reason).
+    With nlgeom, the deck must have a NLGEOM step (the nonlinear peer set) instead of none."""
+    prints, has_nlgeom = 0, False
     try:
         recs = list(records(path))
     except (OSError, UnicodeError) as e:
@@ -88,14 +93,21 @@ def first_violation(path):
     for keyword, params, data in recs:
         if keyword not in SUPPORTED:
             return f"keyword *{keyword}"
+        unsupported = UNSUPPORTED_PARAMETERS.intersection(params)
+        if unsupported:
+            return f"*{keyword} {sorted(unsupported)[0]}"
         if keyword == "ELEMENT":
             etype = params.get("TYPE", "").upper()
             if etype not in OUR_ELEMENTS:
                 return f"element {etype or '?'}"
+            if nlgeom and etype == "C3D8I":
+                return "C3D8I under NLGEOM"
         elif keyword == "STEP":
-            nlgeom = params.get("NLGEOM")
-            if nlgeom is not None and nlgeom.upper() != "NO":
-                return "NLGEOM"
+            flag = params.get("NLGEOM")
+            if flag is not None and flag.upper() != "NO":
+                if not nlgeom:
+                    return "NLGEOM"
+                has_nlgeom = True
             if "PERTURBATION" in params:
                 return "PERTURBATION"
         elif keyword in ("ELASTIC", "EXPANSION"):
@@ -128,16 +140,18 @@ def first_violation(path):
             prints += 1
     if prints == 0:
         return "nothing printed"
+    if nlgeom and not has_nlgeom:
+        return "no NLGEOM step"
     return None
 
 
-def qualifying_decks(suite):
+def qualifying_decks(suite, nlgeom=False):
     """(qualifying names, {name: reason}) for every deck in the suite folder."""
     names = sorted({f[:-4] if f.endswith(".inp") else f[:-7]
                     for f in os.listdir(suite) if f.endswith(".inp") or f.endswith(".inp.gz")})
     good, excluded = [], {}
     for name in names:
-        reason = first_violation(deck_path(suite, name))
+        reason = first_violation(deck_path(suite, name), nlgeom)
         if reason is None:
             good.append(name)
         else:

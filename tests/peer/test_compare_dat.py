@@ -53,6 +53,14 @@ class CompareDat(unittest.TestCase):
         self.assertEqual(worst, float("inf"))
         self.assertIn("blocks", problems[0])
 
+    def test_common_times_skip_increments_only_one_side_printed(self):
+        half = REF.replace("0.1000000E+01", "0.5000000E+00")
+        worst, problems = compare(half + REF, REF, common_times_only=True)
+        self.assertEqual((worst, problems), (0.0, []))
+        worst, problems = compare(half, REF, common_times_only=True)
+        self.assertEqual(worst, float("inf"))
+        self.assertIn("last printed time", problems[0])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -48,6 +48,15 @@ struct Collect : analysis::FrameSink, analysis::EventSink {
   void on_event(const analysis::Event& e) override { events.push_back(e); }
 };
 
+/// Controls tight enough that comparisons with closed forms see the model, not ccx's default
+/// residual tolerance of 0.5 %.
+analysis::NonlinearOptions tight_options() {
+  analysis::NonlinearOptions o;
+  o.controls.residual_tolerance = 1e-10;
+  o.controls.correction_tolerance = 1e-10;
+  return o;
+}
+
 Collect solve(const std::string& deck, analysis::NonlinearOptions options = {}) {
   const model::Model m = inp::read_deck_text(deck, "cube.inp");
   Collect c;
@@ -65,7 +74,8 @@ TEST(NonlinearStatic, LargeUniaxialStretchMatchesStVenantKirchhoff) {
 *BOUNDARY
 X1, 1, 1, 0.5
 *END STEP
-)"));
+)"),
+                       tight_options());
   ASSERT_FALSE(c.frames.empty());
   const auto& f = c.frames.back();
   const Real E11 = (1.5 * 1.5 - 1) / 2, S11 = 1000 * E11, E22 = -0.25 * E11;
@@ -123,11 +133,7 @@ TEST(NonlinearStatic, ElasticAnswerDoesNotDependOnTheIncrements) {
 X1, 1, 150.
 *END STEP
 )";
-  // Tight tolerances, so that what remains is the path (none for elasticity), not ccx's
-  // default residual tolerance of 0.5 %.
-  analysis::NonlinearOptions tight;
-  tight.controls.residual_tolerance = 1e-10;
-  tight.controls.correction_tolerance = 1e-10;
+  const analysis::NonlinearOptions tight = tight_options();  // what remains is the path
   const auto one = solve(cube("*STEP, NLGEOM\n*STATIC, DIRECT\n1.0, 1.0" + tail), tight);
   const auto many = solve(cube("*STEP, NLGEOM\n*STATIC, DIRECT\n0.1, 1.0" + tail), tight);
   EXPECT_EQ(many.frames.size(), 10u);
