@@ -160,7 +160,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
 
   const int n_dofs = 3 * model.n_nodes();
   VecX u = VecX::Zero(n_dofs);             // converged displacement
-  VecX f_ext_prev = VecX::Zero(n_dofs);    // external forces at the previous step's end
+  VecX cloads_prev = VecX::Zero(n_dofs);   // concentrated loads at the previous step end
   VecX dT_prev = VecX::Zero(model.n_nodes());
   Real total_time_start = 0, last_q_bar = 0, max_mises = 0;
   int total_iterations = 0;
@@ -190,12 +190,24 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     const VecX u_step_start = u;
     const VecX dT_end = temperature_change(model, step);
     // Loads without amplitude ramp from the previous step's end values to this step's.
-    const VecX f_ramped_end = external_forces(model, step, period, total_time_start + period, 1.0);
-    require_loads_reach_elements(model, *dofs, f_ramped_end);
-    auto loads_at = [&](Real t) {
+    // Pressures follow the deformed faces under NLGEOM (their load stiffness is left out of
+    // the tangent, which keeps it symmetric at the price of slower convergence under
+    // large pressure-driven rotations).
+    const model::Step* previous = s > 0 ? &model.steps[s - 1] : nullptr;
+    require_loads_reach_elements(
+        model, *dofs, external_forces(model, step, period, total_time_start + period, 1.0));
+    auto loads_at = [&](Real t, const VecX& u_now) {
       const Real ramp = t / period;
-      return VecX(f_ext_prev * (1 - ramp) +
-                  external_forces(model, step, t, total_time_start + t, ramp));
+      const MatX3 x = step.nlgeom ? MatX3(model.mesh.coords +
+                                          Eigen::Map<const MatX3>(u_now.data(), model.n_nodes(), 3))
+                                  : model.mesh.coords;
+      VecX f = cloads_prev * (1 - ramp) +
+               concentrated_forces(model, step, t, total_time_start + t, ramp) +
+               pressure_forces(model, step, t, total_time_start + t, ramp, x);
+      if (previous)  // the previous step's pressures fade out as this step's take over
+        f += pressure_forces(model, *previous, previous->procedure.period, total_time_start,
+                             1 - ramp, x);
+      return f;
     };
 
     nonlinear::Convergence convergence(options.controls, last_q_bar);
@@ -208,7 +220,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       const Real ramp = t / period;
       const VecX g = prescribed_values(model, step, *dofs, t, total_time_start + t, ramp,
                                        u_step_start, u_step_start);
-      const VecX f_ext = loads_at(t);
+
       const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
       convergence.begin_increment();
       // Iteration 1 starts from the converged state and moves the prescribed dofs to their new
@@ -227,13 +239,14 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         linsolve::SpdSolveReport report;
         nonlinear::Verdict verdict;
         try {
-          if (it == 1) ev = evaluate(model, *plan, u_trial, dT, f_ext, g - g_old, threads);
+          if (it == 1)
+            ev = evaluate(model, *plan, u_trial, dT, loads_at(t, u_trial), g - g_old, threads);
           spd.factorise(plan->pattern, ev.system.values, report);
           x_trial += spd.solve(plan->pattern, ev.system.values, ev.system.rhs, report);
           const VecX u_new = dofs->expand(x_trial, g);
           const Real c_max = max_abs(u_new - u_trial);
           u_trial = u_new;
-          ev = evaluate(model, *plan, u_trial, dT, f_ext, no_step, threads);
+          ev = evaluate(model, *plan, u_trial, dT, loads_at(t, u_trial), no_step, threads);
           verdict = convergence.check(
               it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});
         } catch (const SolverError& e) {  // singular tangent, inverted element: cut back
@@ -285,7 +298,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         }
       }
     }
-    f_ext_prev = loads_at(period);
+    cloads_prev = concentrated_forces(model, step, period, total_time_start + period, 1.0);
     dT_prev = dT_end;
     last_q_bar = convergence.last_force_average();
     total_time_start += period;

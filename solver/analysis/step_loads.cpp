@@ -17,22 +17,38 @@ Real load_factor(const model::Model& model, int amplitude, Real step_time, Real 
 }
 }  // namespace
 
-VecX external_forces(const model::Model& model, const model::Step& step, Real step_time,
-                     Real total_time, Real ramp) {
+VecX concentrated_forces(const model::Model& model, const model::Step& step, Real step_time,
+                         Real total_time, Real ramp) {
   VecX f = VecX::Zero(3 * model.n_nodes());
   for (const auto& load : step.cloads)
     f[3 * load.node + load.dof] +=
         load.value * load_factor(model, load.amplitude, step_time, total_time, ramp);
+  return f;
+}
+
+VecX pressure_forces(const model::Model& model, const model::Step& step, Real step_time,
+                     Real total_time, Real ramp, const MatX3& x) {
+  VecX f = VecX::Zero(3 * model.n_nodes());
   for (const auto& load : step.pressures) {
     const auto& el = model.mesh.elements[load.face.element];
+    MatX3 xe(el.nodes.size(), 3);
+    for (std::size_t a = 0; a < el.nodes.size(); ++a) xe.row(a) = x.row(el.nodes[a]);
     VecX fe;
-    element::pressure_load(el.type, load.face.face, element_coords(model, el),
-                           load.value * load_factor(model, load.amplitude, step_time, total_time, ramp),
-                           fe);
+    naming_element(el, [&] {
+      element::pressure_load(
+          el.type, load.face.face, xe,
+          load.value * load_factor(model, load.amplitude, step_time, total_time, ramp), fe);
+    });
     for (std::size_t a = 0; a < el.nodes.size(); ++a)
       for (int c = 0; c < 3; ++c) f[3 * el.nodes[a] + c] += fe[3 * a + c];
   }
   return f;
+}
+
+VecX external_forces(const model::Model& model, const model::Step& step, Real step_time,
+                     Real total_time, Real ramp) {
+  return concentrated_forces(model, step, step_time, total_time, ramp) +
+         pressure_forces(model, step, step_time, total_time, ramp, model.mesh.coords);
 }
 
 VecX prescribed_values(const model::Model& model, const model::Step& step,

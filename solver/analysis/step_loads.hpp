@@ -16,6 +16,16 @@ Real amplitude_factor(const model::Model& model, int amplitude, Real step_time, 
 VecX external_forces(const model::Model& model, const model::Step& step, Real step_time,
                      Real total_time, Real ramp);
 
+/// The *CLOAD part of external_forces.
+VecX concentrated_forces(const model::Model& model, const model::Step& step, Real step_time,
+                         Real total_time, Real ramp);
+
+/// The *DLOAD pressure part of external_forces on the faces at nodal positions `x`
+/// (n_nodes x 3): the reference coordinates for small strain, the deformed ones for follower
+/// pressure under NLGEOM.
+VecX pressure_forces(const model::Model& model, const model::Step& step, Real step_time,
+                     Real total_time, Real ramp, const MatX3& x);
+
 /// Values of the prescribed dofs at a time: amplitude-driven ones evaluated there, the others
 /// `start + ramp * (value - start)` with start = `u_start` at that dof; FIXED ones hold
 /// `u_previous` (the previous step's end).

@@ -159,3 +159,24 @@ TEST(NonlinearStatic, UnreachableLoadLevelEndsAsNonConvergence) {
                      options),
                NonConvergence);
 }
+
+TEST(NonlinearStatic, PressureFollowsTheDeformedFaceUnderNlgeom) {
+  // Pressure on the x = 1 face (S4) of a cube free to expand sideways: a true traction, so the
+  // Cauchy stress is exactly -p however much the face area grows (a dead load would give
+  // -p / (lateral stretch)^2).
+  const Real p = 150;
+  const auto c = solve(cube(R"(*STEP, NLGEOM
+*STATIC
+0.5, 1.0
+*DLOAD
+1, P4, 150.
+*END STEP
+)"),
+                       tight_options());
+  const auto& f = c.frames.back();
+  for (Index k = 0; k < f.S.rows(); ++k) {
+    EXPECT_NEAR(f.S(k, 0), -p, 1e-6 * p);
+    EXPECT_NEAR(f.S(k, 1), 0.0, 1e-6 * p);
+  }
+  EXPECT_GT(f.U(6, 1), 0.01);  // the face really grew
+}
