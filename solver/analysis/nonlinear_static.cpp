@@ -267,6 +267,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           x = x_trial;
           u = u_trial;
           const int increment_no = increments.increment_number();
+          const int attempt = increments.attempt();
           const Real dt = increments.increment();
           increments.converged(it);
           output::Frame frame = nlgeom_frame(model, u, dT, ev.internal_force, threads);
@@ -282,7 +283,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                                                       3 * sr.tail<3>().squaredNorm()));
           }
           events.on_event({.kind = Event::Kind::Increment, .step = step_no,
-                           .increment = increment_no, .attempt = 1, .iteration = it,
+                           .increment = increment_no, .attempt = attempt, .iteration = it,
                            .step_time = t, .total_time = total_time_start + t, .dt = dt,
                            .wall_time = wall()});
           frames.on_frame(step, frame);
@@ -292,7 +293,9 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           events.on_event({.kind = Event::Kind::Cutback, .step = step_no,
                            .increment = increments.increment_number(),
                            .attempt = increments.attempt(), .iteration = it,
-                           .wall_time = wall(), .message = verdict.reason});
+                           .step_time = t_old, .total_time = total_time_start + t_old,
+                           .dt = increments.increment(), .wall_time = wall(),
+                           .message = verdict.reason});
           increments.cut_back(verdict.cutback_factor, verdict.reason);
           break;
         }

@@ -3,7 +3,8 @@
 //   kontakt solve MODEL.inp [-o DIR] [--threads N] [--quiet]
 //
 // reads the deck, runs the analysis its plan calls for, and writes DIR/MODEL.dat (ccx layout),
-// DIR/MODEL.hdf + DIR/MODEL.xdmf (ParaView) and DIR/MODEL.log.jsonl (events).
+// DIR/MODEL.hdf + DIR/MODEL.xdmf (ParaView), DIR/MODEL.log.jsonl (events) and
+// DIR/MODEL.sta / DIR/MODEL.cvg (ccx-style increment and iteration summaries).
 // Exit codes: 0 converged, 2 input error, 3 not converged, 4 numerical or internal error.
 #include <atomic>
 #include <csignal>
@@ -16,6 +17,7 @@
 #include "analysis/event_log.hpp"
 #include "analysis/linear_static.hpp"
 #include "analysis/nonlinear_static.hpp"
+#include "app/monitor_files.hpp"
 #include "app/progress_printer.hpp"
 #include "app/result_writers.hpp"
 #include "core/error.hpp"
@@ -110,8 +112,10 @@ int run_solve(const SolveArgs& args) {
   }
   analysis::JsonlEventLog log(args.out_dir / (job + ".log.jsonl"));
   app::ProgressPrinter progress(stdout);
+  app::MonitorFiles monitor(args.out_dir, job);
   analysis::EventFanout events;
   events.add(log);
+  events.add(monitor);
   if (!args.quiet) events.add(progress);
 
   auto fail = [&](const char* status, const std::string& message, int code) {
