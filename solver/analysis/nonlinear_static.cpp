@@ -210,8 +210,9 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       return f;
     };
 
-    nonlinear::Convergence convergence(options.controls, last_q_bar);
-    nonlinear::IncrementControl increments(step_timing(step), options.controls);
+    const nonlinear::SolutionControls& controls = options.controls ? *options.controls : step.controls;
+    nonlinear::Convergence convergence(controls, last_q_bar);
+    nonlinear::IncrementControl increments(step_timing(step), controls);
     VecX x = VecX::Zero(dofs->n_equations());
     for (int eq = 0; eq < dofs->n_equations(); ++eq) x[eq] = u[dofs->equation_dof(eq)];
 
@@ -251,7 +252,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
               it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});
         } catch (const SolverError& e) {  // singular tangent, inverted element: cut back
           verdict.kind = nonlinear::Verdict::Kind::Cutback;
-          verdict.cutback_factor = options.controls.divergence_cutback;
+          verdict.cutback_factor = controls.divergence_cutback;
           verdict.reason = e.what();
         }
         ++total_iterations;

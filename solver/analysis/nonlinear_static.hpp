@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <optional>
 
 #include "analysis/events.hpp"
 #include "analysis/linear_static.hpp"
@@ -14,7 +15,8 @@ namespace kontakt::analysis {
 struct NonlinearOptions {
   int threads = 0;                                ///< 0 = all cores
   const std::atomic<bool>* cancel = nullptr;      ///< polled once per iteration
-  nonlinear::SolutionControls controls;
+  /// Overrides every step's *CONTROLS when set (tests, expert use).
+  std::optional<nonlinear::SolutionControls> controls;
 };
 
 /// The run was cancelled through NonlinearOptions::cancel; converged frames are kept.

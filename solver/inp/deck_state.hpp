@@ -12,6 +12,7 @@
 
 #include "inp/inp_lexer.hpp"
 #include "model/model.hpp"
+#include "nonlinear/solution_controls.hpp"
 
 namespace kontakt::inp {
 
@@ -56,6 +57,7 @@ struct ActiveLoads {
   std::vector<model::FileRequest> node_files, element_files;
   int output_frequency = 1;  ///< ccx: the last FREQUENCY= given applies to all outputs
   bool nlgeom = false;       ///< ccx: NLGEOM stays active in later steps
+  nonlinear::SolutionControls controls;  ///< *CONTROLS stay in force until RESET
 };
 
 /// Which keywords already appeared in the open step: OP= acts on the first card only, and the

@@ -24,6 +24,7 @@ void handle_solid_section(const Record&, DeckState&);
 // kw_step.cpp
 void handle_step(const Record&, DeckState&);
 void handle_static(const Record&, DeckState&);
+void handle_controls(const Record&, DeckState&);
 void handle_end_step(const Record&, DeckState&);
 void handle_amplitude(const Record&, DeckState&);
 void handle_equation(const Record&, DeckState&);

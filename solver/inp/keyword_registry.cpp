@@ -15,7 +15,7 @@ constexpr auto A = Placement::Anywhere;
 constexpr auto Ends = MaterialContext::Ends;
 constexpr auto Cont = MaterialContext::Continues;
 
-constexpr std::array<KeywordSpec, 29> kKeywords{{
+constexpr std::array<KeywordSpec, 30> kKeywords{{
     {"HEADING", M, Ends, handle_heading},
     {"NODE", M, Ends, handle_node},
     {"ELEMENT", M, Ends, handle_element},
@@ -33,6 +33,7 @@ constexpr std::array<KeywordSpec, 29> kKeywords{{
     {"BOUNDARY", A, Ends, handle_boundary},
     {"STEP", M, Ends, handle_step},  // opens a step: checked as model-level
     {"STATIC", S, Ends, handle_static},
+    {"CONTROLS", S, Ends, handle_controls},
     {"ENDSTEP", S, Ends, handle_end_step},
     {"CLOAD", S, Ends, handle_cload},
     {"DLOAD", S, Ends, handle_dload},

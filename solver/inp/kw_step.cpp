@@ -15,6 +15,7 @@ void handle_step(const Record& record, DeckState& state) {
   progress.step.where = record.where;
   // ccx: once NLGEOM is selected it stays active in subsequent steps unless switched off.
   progress.step.nlgeom = state.active.nlgeom;
+  progress.step.controls = state.active.controls;
   if (const Param* nlgeom = find_param(record, "NLGEOM")) {
     const std::string value = nlgeom->has_value ? to_upper(nlgeom->value) : "YES";
     if (value != "YES" && value != "NO") fail(record, "NLGEOM=" + value + ": expected YES or NO");

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "nonlinear/solution_controls.hpp"
 
 namespace kontakt::model {
 
@@ -149,6 +150,7 @@ struct Step {
   bool nlgeom = false;
   int max_increments = 100;       ///< *STEP, INC=
   StaticProcedure procedure;
+  nonlinear::SolutionControls controls;  ///< *CONTROLS in force for this step
   std::vector<Boundary> boundaries;
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> pressures;

@@ -52,8 +52,10 @@ struct Collect : analysis::FrameSink, analysis::EventSink {
 /// residual tolerance of 0.5 %.
 analysis::NonlinearOptions tight_options() {
   analysis::NonlinearOptions o;
-  o.controls.residual_tolerance = 1e-10;
-  o.controls.correction_tolerance = 1e-10;
+  nonlinear::SolutionControls c;
+  c.residual_tolerance = 1e-10;
+  c.correction_tolerance = 1e-10;
+  o.controls = c;
   return o;
 }
 
@@ -150,14 +152,28 @@ TEST(NonlinearStatic, CancellationStopsWithinAnIteration) {
 
 TEST(NonlinearStatic, UnreachableLoadLevelEndsAsNonConvergence) {
   // Compressing a cube to zero volume under a dead load cannot converge; the run must stop
-  // with NonConvergence after the cutbacks, never with NaN results.
-  nonlinear::SolutionControls controls;
-  controls.max_cutbacks = 2;
-  analysis::NonlinearOptions options;
-  options.controls = controls;
-  EXPECT_THROW(solve(cube("*STEP, NLGEOM\n*STATIC, DIRECT\n1.0, 1.0\n*CLOAD\nX1, 1, -1e6\n*END STEP\n"),
-                     options),
-               NonConvergence);
+  // with NonConvergence after the cutbacks (two allowed by the deck's *CONTROLS), never with
+  // NaN results.
+  Collect c;
+  const model::Model m = inp::read_deck_text(cube(R"(*STEP, NLGEOM
+*STATIC
+1.0, 1.0
+*CONTROLS, PARAMETERS=TIME INCREMENTATION
+, , , , , , , 2
+*CLOAD
+X1, 1, -1e6
+*END STEP
+)"), "cube.inp");
+  EXPECT_EQ(m.steps[0].controls.max_cutbacks, 2);
+  try {
+    analysis::run_nonlinear_static(m, {}, c, c);
+    FAIL() << "an unreachable load level converged";
+  } catch (const NonConvergence& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 2 cutbacks"), std::string::npos) << e.what();
+  }
+  int cutbacks = 0;
+  for (const auto& e : c.events) cutbacks += e.kind == analysis::Event::Kind::Cutback;
+  EXPECT_EQ(cutbacks, 3);
 }
 
 TEST(NonlinearStatic, PressureFollowsTheDeformedFaceUnderNlgeom) {

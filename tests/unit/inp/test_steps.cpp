@@ -226,3 +226,40 @@ TEST(inpSteps, OutputOnlyKeywordsWarn) {
 
 }  // namespace
 }  // namespace kontakt::inp
+
+namespace kontakt::inp {
+namespace {
+
+TEST(inpSteps, ControlsSetFieldsKeepBlanksAndCarryOverUntilReset) {
+  std::string deck = test::two_cubes_model();
+  deck += "*STEP\n*STATIC\n*CONTROLS, PARAMETERS=TIME INCREMENTATION\n6, , , 30\n0.3, , , , , , 2.0\n"
+          "*CONTROLS, PARAMETERS=FIELD\n0.001, 0.02\n*END STEP\n"
+          "*STEP\n*STATIC\n*END STEP\n"
+          "*STEP\n*STATIC\n*CONTROLS, RESET\n*END STEP\n";
+  const model::Model m = read_deck_text(deck);
+  const auto& c = m.steps[0].controls;
+  EXPECT_EQ(c.divergence_check_from, 6);
+  EXPECT_EQ(c.log_estimate_from, 8);  // blank: unchanged
+  EXPECT_EQ(c.max_iterations, 30);
+  EXPECT_DOUBLE_EQ(c.divergence_cutback, 0.3);
+  EXPECT_DOUBLE_EQ(c.growth_factor, 2.0);
+  EXPECT_DOUBLE_EQ(c.residual_tolerance, 0.001);
+  EXPECT_DOUBLE_EQ(c.correction_tolerance, 0.02);
+  EXPECT_EQ(m.steps[1].controls.max_iterations, 30);  // carried over
+  EXPECT_EQ(m.steps[2].controls.max_iterations, 16);  // RESET: ccx defaults
+}
+
+TEST(inpSteps, ControlsErrorsNameTheLine) {
+  std::string deck = test::two_cubes_model();
+  deck += "*STEP\n*STATIC\n*CONTROLS, PARAMETERS=TIME INCREMENTATION\n4.5\n*END STEP\n";
+  try {
+    read_deck_text(deck, "bad.inp");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("*CONTROLS"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("whole number"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace kontakt::inp

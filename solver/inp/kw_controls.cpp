@@ -1,0 +1,86 @@
+// *CONTROLS: the mechanical solution controls of ccx (TIME INCREMENTATION, FIELD), RESET.
+// Settings stay in force for later steps until RESET, as in ccx.
+#include <type_traits>
+
+#include "inp/keyword_handlers.hpp"
+#include "inp/record_access.hpp"
+
+namespace kontakt::inp {
+
+namespace {
+
+/// Overwrites `target` with field `index` when the field is given (blank keeps the value).
+template <class T>
+void set_if_given(const Record& record, const DataLine& line, std::size_t index, T& target) {
+  if (const std::optional<Real> v = optional_real_field(record, line, index)) {
+    if constexpr (std::is_integral_v<T>) {
+      if (*v != static_cast<Real>(static_cast<T>(*v)) || *v <= 0)
+        fail(record, line, "field " + std::to_string(index + 1) + " must be a positive whole number");
+      target = static_cast<T>(*v);
+    } else {
+      if (!(*v >= 0)) fail(record, line, "field " + std::to_string(index + 1) + " must not be negative");
+      target = *v;
+    }
+  }
+}
+
+void read_time_incrementation(const Record& record, nonlinear::SolutionControls& c) {
+  require_line_count(record, 1, 2);
+  const DataLine& ints = record.lines[0];
+  require_field_count(record, ints, 1, 8);
+  // I_0 I_R I_P I_C I_L I_G I_S I_A (I_S unused by ccx)
+  int unused = 0;
+  int* targets[] = {&c.divergence_check_from, &c.log_estimate_from, &c.loose_residual_after,
+                    &c.max_iterations,       &c.slow_increment_iterations,
+                    &c.fast_increment_iterations, &unused, &c.max_cutbacks};
+  for (std::size_t k = 0; k < ints.fields.size(); ++k) set_if_given(record, ints, k, *targets[k]);
+  if (record.lines.size() < 2) return;
+  const DataLine& reals = record.lines[1];
+  require_field_count(record, reals, 1, 8);
+  // D_F D_C D_B D_A D_S D_H D_D W_G (D_A, D_S, D_H, W_G have no mechanical effect)
+  Real ignored = 0;
+  Real* factors[] = {&c.divergence_cutback, &c.slow_cutback, &c.slow_next_factor, &ignored,
+                     &ignored, &ignored, &c.growth_factor, &ignored};
+  for (std::size_t k = 0; k < reals.fields.size(); ++k) set_if_given(record, reals, k, *factors[k]);
+}
+
+void read_field(const Record& record, nonlinear::SolutionControls& c) {
+  require_line_count(record, 1, 1);
+  const DataLine& line = record.lines[0];
+  require_field_count(record, line, 1, 8);
+  // R_n C_n q_0 q_u R_p epsilon C_epsilon R_l
+  Real* targets[] = {&c.residual_tolerance, &c.correction_tolerance, &c.initial_force_average,
+                     &c.fixed_force_average, &c.loose_residual_tolerance, &c.zero_flux_ratio,
+                     &c.zero_flux_correction_tolerance, &c.linear_residual_ratio};
+  for (std::size_t k = 0; k < line.fields.size(); ++k) set_if_given(record, line, k, *targets[k]);
+}
+
+}  // namespace
+
+void handle_controls(const Record& record, DeckState& state) {
+  check_params(record, {"PARAMETERS", "RESET", "FIELD"});
+  nonlinear::SolutionControls& c = state.active.controls;
+  if (has_param(record, "RESET")) {
+    c = nonlinear::SolutionControls{};
+  } else {
+    const std::optional<std::string> which = name_value(record, "PARAMETERS");
+    if (!which) fail(record, "PARAMETERS= (TIME INCREMENTATION or FIELD) or RESET is required");
+    // Blanks inside keyword values do not count (ccx): TIME INCREMENTATION = TIMEINCREMENTATION.
+    const std::string kind = remove_blanks(to_upper(*which));
+    if (kind == "TIMEINCREMENTATION") {
+      read_time_incrementation(record, c);
+    } else if (kind == "FIELD") {
+      if (const auto field = name_value(record, "FIELD"); field && to_upper(*field) != "DISPLACEMENT")
+        fail(record, "FIELD=" + *field + " is not supported (only DISPLACEMENT)");
+      read_field(record, c);
+    } else if (kind == "LINESEARCH" || kind == "CONTACT") {
+      state.warn(record.where, record.keyword,
+                 "PARAMETERS=" + kind + " has no effect yet (no line search, no contact)");
+    } else {
+      fail(record, "PARAMETERS=" + kind + " is not supported");
+    }
+  }
+  state.open_step->step.controls = c;
+}
+
+}  // namespace kontakt::inp
