@@ -17,6 +17,7 @@
 #include "analysis/support_check.hpp"
 #include "assembly/assembler.hpp"
 #include "core/parallel.hpp"
+#include "element/solid_plastic.hpp"
 #include "element/total_lagrangian.hpp"
 #include "linsolve/spd_solve.hpp"
 #include "nonlinear/convergence.hpp"
@@ -28,35 +29,79 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+using PointStates = std::vector<std::vector<material::J2State>>;  ///< per element, per point
+
+/// What an element reports at its points in the state last evaluated.
+struct ElementOutput {
+  MatX6 stress, strain;  ///< Cauchy stress and strain (Green-Lagrange under NLGEOM)
+  VecX energy_density, peeq;
+};
+
 /// Internal forces, tangent and the average force measure q_bar at a displacement state.
 struct Evaluation {
   assembly::ReducedSystem system;  ///< tangent and T^T (f_ext - f_int)
   VecX internal_force;             ///< full dof vector (reaction forces at constrained dofs)
   Real force_average = 0;          ///< q_bar: mean |element nodal force component|
+  std::vector<ElementOutput> outputs;
+  PointStates trial;               ///< plastic point states reached (plastic elements only)
 };
+
+material::HardeningTable hardening_of(const model::Model& model, const model::Element& el) {
+  return {element_material_def(model, el).plastic};
+}
+
+/// One element's tangent, internal force and point output: total Lagrangian under NLGEOM,
+/// J2 return mapping for plastic materials, linear elasticity otherwise.
+void element_response(const model::Model& model, const model::Element& el, bool nlgeom,
+                      const VecX& u, const VecX& dT, const std::vector<material::J2State>& committed,
+                      MatX& K, VecX& f_int, ElementOutput& out,
+                      std::vector<material::J2State>& trial) {
+  const MatX3 X = element_coords(model, el), ue = element_displacements(el, u);
+  const VecX dTe = element_values(el, dT);
+  const auto mat = element_material(model, el);
+  if (nlgeom) {
+    element::NlgeomResult r;
+    element::nlgeom_element(el.type, X, mat, ue, dTe, true, r);
+    K = std::move(r.tangent);
+    f_int = std::move(r.internal_force);
+    out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density), VecX()};
+  } else if (!element_material_def(model, el).plastic.empty()) {
+    element::PlasticResult r;
+    element::plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed, true, r);
+    K = std::move(r.tangent);
+    f_int = std::move(r.internal_force);
+    trial = std::move(r.state);
+    out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), std::move(r.peeq)};
+  } else {
+    element::IpResults r;
+    element::recover(el.type, X, mat, ue, dTe, r);
+    element::linear_stiffness(el.type, X, mat, K);
+    f_int = std::move(r.internal_force);
+    out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};
+  }
+}
 
 /// Assembles the tangent and residual at `u` (full dof vector) with temperatures `dT`. A
 /// nonzero `prescribed_step` (per prescribed slot) moves the constrained dofs within the
 /// linearised system (-K g on the right-hand side), so the free dofs follow them at once.
-Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& plan,
-                    const VecX& u, const VecX& dT, const VecX& f_ext,
-                    const VecX& prescribed_step, int threads) {
+Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& plan, bool nlgeom,
+                    const PointStates& committed, const VecX& u, const VecX& dT,
+                    const VecX& f_ext, const VecX& prescribed_step, int threads) {
   const auto& elements = model.mesh.elements;
   Evaluation ev;
   std::vector<VecX> f_el(elements.size());
+  ev.outputs.resize(elements.size());
+  ev.trial.resize(elements.size());
   // The assembler scatters K and -f_int (as the element "load").
   assembly::assemble(
       model, plan, prescribed_step,
       [&](int e, MatX& K, VecX& f) {
         const auto& el = elements[e];
-        element::NlgeomResult r;
         naming_element(el, [&] {
-          element::nlgeom_element(el.type, element_coords(model, el), element_material(model, el),
-                                  element_displacements(el, u), element_values(el, dT), true, r);
+          element_response(model, el, nlgeom, u, dT, committed[e], K, f_el[e], ev.outputs[e],
+                           ev.trial[e]);
         });
-        K = std::move(r.tangent);
-        f = -r.internal_force;
-        f_el[e] = std::move(r.internal_force);
+        f = -f_el[e];
       },
       threads, ev.system);
   ev.internal_force = VecX::Zero(u.size());
@@ -74,14 +119,13 @@ Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& pla
   return ev;
 }
 
-/// Cauchy stress, Green-Lagrange strain and nodal forces of a converged state.
-output::Frame nlgeom_frame(const model::Model& model, const VecX& u, const VecX& dT,
-                           const VecX& internal_force, int threads) {
+/// The output frame of a converged state from its last evaluation.
+output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev) {
   const auto& elements = model.mesh.elements;
   const int n_el = model.n_elements(), n_nodes = model.n_nodes();
   output::Frame frame;
   frame.U = Eigen::Map<const MatX3>(u.data(), n_nodes, 3);
-  frame.RF = Eigen::Map<const MatX3>(internal_force.data(), n_nodes, 3);
+  frame.RF = Eigen::Map<const MatX3>(ev.internal_force.data(), n_nodes, 3);
   frame.ip_offset.assign(n_el + 1, 0);
   for (int e = 0; e < n_el; ++e)
     frame.ip_offset[e + 1] = frame.ip_offset[e] + element::traits(elements[e].type).n_ip;
@@ -91,43 +135,59 @@ output::Frame nlgeom_frame(const model::Model& model, const VecX& u, const VecX&
   frame.ENER.resize(n_ip);
   frame.ip_volume.resize(n_ip);
   frame.EVOL.resize(n_el);
-  std::vector<MatX> S_node(n_el), E_node(n_el);
-  parallel_chunks(n_el, threads, [&](std::size_t begin, std::size_t end, int) {
-    element::NlgeomResult r;
-    for (std::size_t e = begin; e < end; ++e) {
-      const auto& el = elements[e];
-      const MatX3 X = element_coords(model, el);
-      naming_element(el, [&] {
-        element::nlgeom_element(el.type, X, element_material(model, el),
-                                element_displacements(el, u), element_values(el, dT), false, r);
-      });
-      const Index first = frame.ip_offset[e], count = frame.ip_offset[e + 1] - first;
-      frame.S.middleRows(first, count) = r.cauchy;
-      frame.E.middleRows(first, count) = r.green_lagrange;
-      frame.ENER.segment(first, count) = r.energy_density;
-      frame.ip_volume.segment(first, count) = element::ip_volumes(el.type, X);
-      frame.EVOL[e] = frame.ip_volume.segment(first, count).sum();
-      const MatX& to_nodes = element::ip_to_node_extrapolation(el.type);
-      S_node[e] = to_nodes * r.cauchy;
-      E_node[e] = to_nodes * r.green_lagrange;
-    }
-  });
+  bool any_plastic = false;
+  for (const auto& o : ev.outputs) any_plastic |= o.peeq.size() > 0;
+  if (any_plastic) frame.PEEQ = VecX::Zero(n_ip);
   frame.S_nodal = MatX6::Zero(n_nodes, 6);
   frame.E_nodal = MatX6::Zero(n_nodes, 6);
   VecX count = VecX::Zero(n_nodes);
-  for (int e = 0; e < n_el; ++e)
-    for (std::size_t a = 0; a < elements[e].nodes.size(); ++a) {
-      const int n = elements[e].nodes[a];
-      frame.S_nodal.row(n) += S_node[e].row(a);
-      frame.E_nodal.row(n) += E_node[e].row(a);
-      count[n] += 1;
+  for (int e = 0; e < n_el; ++e) {
+    const auto& el = elements[e];
+    const auto& o = ev.outputs[e];
+    const Index first = frame.ip_offset[e], n = frame.ip_offset[e + 1] - first;
+    frame.S.middleRows(first, n) = o.stress;
+    frame.E.middleRows(first, n) = o.strain;
+    frame.ENER.segment(first, n) = o.energy_density;
+    if (o.peeq.size()) frame.PEEQ.segment(first, n) = o.peeq;
+    frame.ip_volume.segment(first, n) = element::ip_volumes(el.type, element_coords(model, el));
+    frame.EVOL[e] = frame.ip_volume.segment(first, n).sum();
+    const MatX& to_nodes = element::ip_to_node_extrapolation(el.type);
+    const MatX S_node = to_nodes * o.stress, E_node = to_nodes * o.strain;
+    for (std::size_t a = 0; a < el.nodes.size(); ++a) {
+      frame.S_nodal.row(el.nodes[a]) += S_node.row(a);
+      frame.E_nodal.row(el.nodes[a]) += E_node.row(a);
+      count[el.nodes[a]] += 1;
     }
+  }
   for (int n = 0; n < n_nodes; ++n)
     if (count[n] > 0) {
       frame.S_nodal.row(n) /= count[n];
       frame.E_nodal.row(n) /= count[n];
     }
   return frame;
+}
+
+/// Refuses combinations this driver cannot represent, naming the step or material.
+void require_supported(const model::Model& model) {
+  bool any_plastic = false;
+  for (const auto& m : model.materials) any_plastic |= !m.plastic.empty();
+  if (!any_plastic) return;
+  for (const auto& step : model.steps)
+    if (step.nlgeom)
+      throw InputError(step.where, "*STEP",
+                       "NLGEOM together with *PLASTIC (finite-strain plasticity) is not "
+                       "supported yet");
+}
+
+/// Point states of every plastic element, all at the virgin state.
+PointStates initial_point_states(const model::Model& model) {
+  PointStates states(model.mesh.elements.size());
+  for (std::size_t e = 0; e < states.size(); ++e) {
+    const auto& el = model.mesh.elements[e];
+    if (!element_material_def(model, el).plastic.empty())
+      states[e].resize(element::traits(el.type).n_ip);
+  }
+  return states;
 }
 
 nonlinear::StepTiming step_timing(const model::Step& step) {
@@ -147,6 +207,8 @@ Real max_abs(const VecX& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0; }
 bool needs_newton(const model::Model& model) {
   for (const auto& step : model.steps)
     if (step.nlgeom) return true;
+  for (const auto& el : model.mesh.elements)
+    if (!element_material_def(model, el).plastic.empty()) return true;
   return false;
 }
 
@@ -154,6 +216,8 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                           FrameSink& frames, EventSink& events) {
   if (model.steps.empty())
     throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
+  require_supported(model);
+  PointStates committed = initial_point_states(model);
   const int threads = resolve_threads(options.threads);
   const auto t0 = Clock::now();
   auto wall = [&] { return std::chrono::duration<Real>(Clock::now() - t0).count(); };
@@ -241,13 +305,15 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         nonlinear::Verdict verdict;
         try {
           if (it == 1)
-            ev = evaluate(model, *plan, u_trial, dT, loads_at(t, u_trial), g - g_old, threads);
+            ev = evaluate(model, *plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
+                          g - g_old, threads);
           spd.factorise(plan->pattern, ev.system.values, report);
           x_trial += spd.solve(plan->pattern, ev.system.values, ev.system.rhs, report);
           const VecX u_new = dofs->expand(x_trial, g);
           const Real c_max = max_abs(u_new - u_trial);
           u_trial = u_new;
-          ev = evaluate(model, *plan, u_trial, dT, loads_at(t, u_trial), no_step, threads);
+          ev = evaluate(model, *plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
+                        no_step, threads);
           verdict = convergence.check(
               it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});
         } catch (const SolverError& e) {  // singular tangent, inverted element: cut back
@@ -271,7 +337,9 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           const int attempt = increments.attempt();
           const Real dt = increments.increment();
           increments.converged(it);
-          output::Frame frame = nlgeom_frame(model, u, dT, ev.internal_force, threads);
+          output::Frame frame = converged_frame(model, u, ev);
+          for (std::size_t e = 0; e < committed.size(); ++e)
+            if (!committed[e].empty()) committed[e] = ev.trial[e];
           frame.step = step_no;
           frame.increment = increment_no;
           frame.step_time = t;

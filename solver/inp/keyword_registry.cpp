@@ -15,7 +15,7 @@ constexpr auto A = Placement::Anywhere;
 constexpr auto Ends = MaterialContext::Ends;
 constexpr auto Cont = MaterialContext::Continues;
 
-constexpr std::array<KeywordSpec, 30> kKeywords{{
+constexpr std::array<KeywordSpec, 31> kKeywords{{
     {"HEADING", M, Ends, handle_heading},
     {"NODE", M, Ends, handle_node},
     {"ELEMENT", M, Ends, handle_element},
@@ -25,6 +25,7 @@ constexpr std::array<KeywordSpec, 30> kKeywords{{
     {"MATERIAL", M, Cont, handle_material},
     {"ELASTIC", M, Cont, handle_elastic},
     {"DENSITY", M, Cont, handle_density},
+    {"PLASTIC", M, Cont, handle_plastic},
     {"EXPANSION", M, Cont, handle_expansion},
     {"SOLIDSECTION", M, Ends, handle_solid_section},
     {"INITIALCONDITIONS", M, Ends, handle_initial_conditions},

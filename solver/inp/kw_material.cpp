@@ -55,6 +55,31 @@ void handle_elastic(const Record& record, DeckState& state) {
   }
 }
 
+void handle_plastic(const Record& record, DeckState& state) {
+  check_params(record, {"HARDENING"});
+  const std::string hardening = to_upper(name_value(record, "HARDENING").value_or("ISOTROPIC"));
+  if (hardening != "ISOTROPIC")
+    fail(record, "HARDENING=" + hardening + " is not supported yet (only ISOTROPIC)");
+  model::Material& material = current_material(record, state);
+  require_line_count(record, 1, 10000);
+  std::optional<Real> temperature;
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 2, 3);
+    if (const auto t = optional_real_field(record, line, 2)) {
+      if (temperature && *t != *temperature)
+        fail(record, line, "temperature-dependent hardening is not supported yet");
+      temperature = t;
+    }
+    const Real stress = real_field(record, line, 0), strain = real_field(record, line, 1);
+    if (!(stress >= 0)) fail(record, line, "the yield stress must not be negative");
+    if (material.plastic.empty() ? strain != 0 : !(strain > material.plastic.back().second))
+      fail(record, line, material.plastic.empty()
+                             ? "the first row must be at zero plastic strain (initial yield)"
+                             : "plastic strains must increase from row to row");
+    material.plastic.emplace_back(stress, strain);
+  }
+}
+
 void handle_density(const Record& record, DeckState& state) {
   check_params(record, {});
   model::Material& material = current_material(record, state);

@@ -63,6 +63,9 @@ struct Material {
   std::optional<Real> density;    ///< *DENSITY
   std::optional<Real> expansion;  ///< *EXPANSION, isotropic secant coefficient
   Real expansion_zero = 0;        ///< *EXPANSION, ZERO= reference temperature
+  /// *PLASTIC (isotropic hardening): (yield stress, equivalent plastic strain) rows, the first
+  /// at zero plastic strain; empty for an elastic material.
+  std::vector<std::pair<Real, Real>> plastic;
   SourceLoc where;
 };
 

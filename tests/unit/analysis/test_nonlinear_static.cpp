@@ -196,3 +196,37 @@ TEST(NonlinearStatic, PressureFollowsTheDeformedFaceUnderNlgeom) {
   }
   EXPECT_GT(f.U(6, 1), 0.01);  // the face really grew
 }
+
+TEST(NonlinearStatic, UniaxialElasticPlasticBarFollowsTheHardeningCurve) {
+  // Small strain, E = 200000, yield 200, linear hardening H = 1000 from the *PLASTIC table:
+  // sigma = 200 + E H / (E + H) (eps - 200 / E) once yielded; PEEQ = (sigma - 200) / H.
+  std::string deck = cube(R"(*STEP
+*STATIC, DIRECT
+0.1, 1.0
+*BOUNDARY
+X1, 1, 1, 0.01
+*EL PRINT, ELSET=EALL
+S, PEEQ
+*END STEP
+)");
+  deck.replace(deck.find("1000, 0.25"), 10, "200000, 0.3\n*PLASTIC\n200., 0.\n300., 0.1");
+  const auto c = solve(deck, tight_options());
+  ASSERT_EQ(c.frames.size(), 10u);
+  const Real E = 200000, H = 1000, sy = 200;
+  for (const auto& f : c.frames) {
+    const Real eps = 0.01 * f.step_time;
+    const Real expected = eps * E <= sy ? eps * E : sy + E * H / (E + H) * (eps - sy / E);
+    ASSERT_EQ(f.PEEQ.size(), 8);
+    for (Index k = 0; k < f.S.rows(); ++k) {
+      EXPECT_NEAR(f.S(k, 0), expected, 1e-6 * expected) << "eps " << eps;
+      EXPECT_NEAR(f.S(k, 1), 0.0, 1e-6 * expected);
+      EXPECT_NEAR(f.PEEQ(k), std::max(0.0, (expected - sy) / H), 1e-9);
+    }
+  }
+}
+
+TEST(NonlinearStatic, PlasticityWithNlgeomIsRefusedClearly) {
+  std::string deck = cube("*STEP, NLGEOM\n*STATIC\n*CLOAD\nX1, 1, 1.\n*END STEP\n");
+  deck.replace(deck.find("1000, 0.25"), 10, "1000, 0.25\n*PLASTIC\n10., 0.");
+  EXPECT_THROW(solve(deck), InputError);
+}

@@ -263,3 +263,33 @@ TEST(inpSteps, ControlsErrorsNameTheLine) {
 
 }  // namespace
 }  // namespace kontakt::inp
+
+namespace kontakt::inp {
+namespace {
+
+TEST(inpMaterial, PlasticTableIsReadAndChecked) {
+  auto with_plastic = [](const std::string& lines) {
+    std::string deck = test::two_cubes_model();
+    const auto at = deck.find("*ELASTIC");
+    deck.insert(deck.find('\n', deck.find('\n', at) + 1) + 1, "*PLASTIC" + lines + "\n");
+    return deck;
+  };
+  const model::Model m = read_deck_text(with_plastic("\n250., 0.\n300., 0.05"));
+  ASSERT_EQ(m.materials[0].plastic.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.materials[0].plastic[1].first, 300.0);
+  EXPECT_DOUBLE_EQ(m.materials[0].plastic[1].second, 0.05);
+  for (const std::string& bad : {std::string("\n250., 0.01"), std::string("\n250., 0.\n260., 0."),
+                                 std::string(", HARDENING=KINEMATIC\n250., 0."),
+                                 std::string("\n250., 0., 20.\n260., 0.1, 100.")}) {
+    try {
+      read_deck_text(with_plastic(bad), "p.inp");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("*PLASTIC"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("p.inp:"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kontakt::inp
