@@ -21,7 +21,7 @@ def grid_size(element, dofs):
     raise ValueError("too many dofs")
 
 
-def write_block(path, element, dofs):
+def write_block(path, element, dofs, nlgeom=False, load=1000.0):
     nx, ny, nz = grid_size(element, dofs)
     quadratic = element == "C3D20"
     m = 2 if quadratic else 1  # node lattice step per element
@@ -70,8 +70,9 @@ def write_block(path, element, dofs):
     lines += [", ".join(map(str, tip[s:s + 16])) for s in range(0, len(tip), 16)]
     lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", "210000, 0.3",
               "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL",
-              "*BOUNDARY", "FIX, 1, 3", "*STEP", "*STATIC",
-              "*CLOAD", f"TIP, 3, {-1000.0 / len(tip):.12g}",
+              "*BOUNDARY", "FIX, 1, 3"]
+    lines += ["*STEP, NLGEOM", "*STATIC", "0.25, 1.0"] if nlgeom else ["*STEP", "*STATIC"]
+    lines += ["*CLOAD", f"TIP, 3, {-load / len(tip):.12g}",
               "*NODE PRINT, NSET=TIPLINE", "U", "*END STEP"]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
