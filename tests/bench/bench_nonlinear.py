@@ -20,7 +20,7 @@ def increments_and_iterations(sta_path):
             fields = line.split()
             if len(fields) >= 7 and fields[0].isdigit():
                 attempt = fields[2]
-                iterations += int(fields[3] if not attempt.endswith("U") else fields[3])
+                iterations += int(fields[3])
                 increments += not attempt.endswith("U")
     return increments, iterations
 
