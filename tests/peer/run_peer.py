@@ -74,6 +74,20 @@ def ccx_reference(source_dir, name, work):
     return cached
 
 
+def sta_counts(path):
+    """(converged increments, Newton iterations of all attempts) from a .sta file, or None."""
+    if not os.path.exists(path):
+        return None
+    increments = iterations = 0
+    with open(path) as f:
+        for line in f:
+            fields = line.split()
+            if len(fields) >= 7 and fields[0].isdigit():
+                iterations += int(fields[3])
+                increments += not fields[2].endswith("U")
+    return increments, iterations
+
+
 def run_one(source_dir, name, args):
     """(status, detail, worst error) for one deck."""
     try:
@@ -96,9 +110,15 @@ def run_one(source_dir, name, args):
         ours = f.read()
     with open(reference) as f:
         worst, problems = compare_dat.compare(ours, f.read(), common_times_only=args.nlgeom)
+    detail = ""
+    if args.nlgeom:  # incrementation side by side: increments/iterations, ours vs ccx
+        ours_sta = sta_counts(os.path.join(run_dir, "out", name + ".sta"))
+        ccx_sta = sta_counts(os.path.join(args.work, name, "ccx", name + ".sta"))
+        if ours_sta and ccx_sta:
+            detail = f"increments/iterations {ours_sta[0]}/{ours_sta[1]} (ccx {ccx_sta[0]}/{ccx_sta[1]})"
     if problems:
         return "FAIL", "; ".join(problems[:2]), worst
-    return ("PASS" if worst <= args.tolerance else "FAIL"), "", worst
+    return ("PASS" if worst <= args.tolerance else "FAIL"), detail, worst
 
 
 def main():
