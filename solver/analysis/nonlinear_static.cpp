@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "analysis/element_access.hpp"
+#include "analysis/small_strain_frame.hpp"
 #include "analysis/step_loads.hpp"
 #include "analysis/support_check.hpp"
 #include "assembly/assembler.hpp"
@@ -121,28 +122,13 @@ Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& pla
 
 /// The output frame of a converged state from its last evaluation.
 output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev) {
-  const auto& elements = model.mesh.elements;
-  const int n_el = model.n_elements(), n_nodes = model.n_nodes();
-  output::Frame frame;
-  frame.U = Eigen::Map<const MatX3>(u.data(), n_nodes, 3);
-  frame.RF = Eigen::Map<const MatX3>(ev.internal_force.data(), n_nodes, 3);
-  frame.ip_offset.assign(n_el + 1, 0);
-  for (int e = 0; e < n_el; ++e)
-    frame.ip_offset[e + 1] = frame.ip_offset[e] + element::traits(elements[e].type).n_ip;
-  const Index n_ip = frame.ip_offset.back();
-  frame.S.resize(n_ip, 6);
-  frame.E.resize(n_ip, 6);
-  frame.ENER.resize(n_ip);
-  frame.ip_volume.resize(n_ip);
-  frame.EVOL.resize(n_el);
+  output::Frame frame = sized_frame(model, u);
+  frame.RF = Eigen::Map<const MatX3>(ev.internal_force.data(), model.n_nodes(), 3);
   bool any_plastic = false;
   for (const auto& o : ev.outputs) any_plastic |= o.peeq.size() > 0;
-  if (any_plastic) frame.PEEQ = VecX::Zero(n_ip);
-  frame.S_nodal = MatX6::Zero(n_nodes, 6);
-  frame.E_nodal = MatX6::Zero(n_nodes, 6);
-  VecX count = VecX::Zero(n_nodes);
-  for (int e = 0; e < n_el; ++e) {
-    const auto& el = elements[e];
+  if (any_plastic) frame.PEEQ = VecX::Zero(frame.ip_offset.back());
+  for (int e = 0; e < model.n_elements(); ++e) {
+    const auto& el = model.mesh.elements[e];
     const auto& o = ev.outputs[e];
     const Index first = frame.ip_offset[e], n = frame.ip_offset[e + 1] - first;
     frame.S.middleRows(first, n) = o.stress;
@@ -151,19 +137,8 @@ output::Frame converged_frame(const model::Model& model, const VecX& u, const Ev
     if (o.peeq.size()) frame.PEEQ.segment(first, n) = o.peeq;
     frame.ip_volume.segment(first, n) = element::ip_volumes(el.type, element_coords(model, el));
     frame.EVOL[e] = frame.ip_volume.segment(first, n).sum();
-    const MatX& to_nodes = element::ip_to_node_extrapolation(el.type);
-    const MatX S_node = to_nodes * o.stress, E_node = to_nodes * o.strain;
-    for (std::size_t a = 0; a < el.nodes.size(); ++a) {
-      frame.S_nodal.row(el.nodes[a]) += S_node.row(a);
-      frame.E_nodal.row(el.nodes[a]) += E_node.row(a);
-      count[el.nodes[a]] += 1;
-    }
   }
-  for (int n = 0; n < n_nodes; ++n)
-    if (count[n] > 0) {
-      frame.S_nodal.row(n) /= count[n];
-      frame.E_nodal.row(n) /= count[n];
-    }
+  average_to_nodes(model, frame);
   return frame;
 }
 

@@ -4,47 +4,19 @@
 #include <string>
 
 #include "analysis/linear_static.hpp"
+#include "cube_deck.hpp"
 #include "inp/read_deck.hpp"
 
 using namespace kontakt;
 
 namespace {
 
-/// A unit cube of one C3D8 element, E = 1000, nu = 0.25, alpha = 1e-5; `rest` is appended.
+/// The unit cube with E = 1000, nu = 0.25, alpha = 1e-5; `rest` is appended.
 std::string cube_deck(const std::string& rest) {
-  return R"(*NODE, NSET=NALL
-1, 0, 0, 0
-2, 1, 0, 0
-3, 1, 1, 0
-4, 0, 1, 0
-5, 0, 0, 1
-6, 1, 0, 1
-7, 1, 1, 1
-8, 0, 1, 1
-*ELEMENT, TYPE=C3D8, ELSET=EALL
-1, 1, 2, 3, 4, 5, 6, 7, 8
-*NSET, NSET=X0
-1, 4, 5, 8
-*NSET, NSET=X1
-2, 3, 6, 7
-*MATERIAL, NAME=STEEL
-*ELASTIC
-1000, 0.25
-*EXPANSION
-1e-5
-*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
-)" + rest;
+  return testing_decks::cube_model("*ELASTIC\n1000, 0.25\n*EXPANSION\n1e-5\n") + rest;
 }
 
-/// Symmetry supports that leave the cube free to expand and contract.
-const char* kRollers = R"(*BOUNDARY
-X0, 1
-1, 2, 3
-2, 2
-2, 3
-4, 3
-5, 2
-)";
+using testing_decks::kRollers;
 
 struct Collect : analysis::FrameSink, analysis::EventSink {
   std::vector<output::Frame> frames;

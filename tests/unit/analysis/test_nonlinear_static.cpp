@@ -5,40 +5,16 @@
 #include <string>
 
 #include "analysis/nonlinear_static.hpp"
+#include "cube_deck.hpp"
 #include "inp/read_deck.hpp"
 
 using namespace kontakt;
 
 namespace {
 
-/// Unit cube, one C3D8, E = 1000, nu = 0.25, symmetry rollers; `rest` appended.
+/// The unit cube with E = 1000, nu = 0.25 on symmetry rollers; `rest` appended.
 std::string cube(const std::string& rest) {
-  return R"(*NODE, NSET=NALL
-1, 0, 0, 0
-2, 1, 0, 0
-3, 1, 1, 0
-4, 0, 1, 0
-5, 0, 0, 1
-6, 1, 0, 1
-7, 1, 1, 1
-8, 0, 1, 1
-*ELEMENT, TYPE=C3D8, ELSET=EALL
-1, 1, 2, 3, 4, 5, 6, 7, 8
-*NSET, NSET=X0
-1, 4, 5, 8
-*NSET, NSET=X1
-2, 3, 6, 7
-*MATERIAL, NAME=M
-*ELASTIC
-1000, 0.25
-*SOLID SECTION, ELSET=EALL, MATERIAL=M
-*BOUNDARY
-X0, 1
-1, 2, 3
-2, 2, 3
-4, 3
-5, 2
-)" + rest;
+  return testing_decks::cube_model("*ELASTIC\n1000, 0.25\n") + testing_decks::kRollers + rest;
 }
 
 struct Collect : analysis::FrameSink, analysis::EventSink {
