@@ -129,6 +129,7 @@ int run_solve(const SolveArgs& args) {
     const model::Model model = inp::read_deck(args.deck);
     for (const auto& w : model.warnings) std::fprintf(stderr, "kontakt: warning: %s\n", w.c_str());
     app::ResultWriters writers(model, args.out_dir, job);
+    events.add(writers);
     // The results of every converged increment are kept, whatever ends the run.
     try {
       if (analysis::needs_newton(model)) {

@@ -10,14 +10,19 @@ ResultWriters::ResultWriters(const model::Model& model, const std::filesystem::p
 void ResultWriters::on_frame(const model::Step& step, const output::Frame& frame) {
   dat_.write(step, frame);
   if (output::file_output_due(step, frame)) hdf5_.write(frame);
-  hdf5_.add_increment({.step = frame.step,
-                       .increment = frame.increment,
-                       .attempts = 1,
-                       .iterations = 1,
-                       .total_time = frame.total_time,
-                       .step_time = frame.step_time,
-                       .dt = frame.step_time,
-                       .converged = frame.converged});
+}
+
+void ResultWriters::on_event(const analysis::Event& e) {
+  using Kind = analysis::Event::Kind;
+  if (e.kind != Kind::Increment && e.kind != Kind::Cutback) return;
+  hdf5_.add_increment({.step = e.step,
+                       .increment = e.increment,
+                       .attempts = e.attempt,
+                       .iterations = e.iteration,
+                       .total_time = e.total_time,
+                       .step_time = e.step_time,
+                       .dt = e.dt,
+                       .converged = e.kind == Kind::Increment});
 }
 
 void ResultWriters::finish() { hdf5_.finish(); }

@@ -10,12 +10,15 @@
 
 namespace kontakt::app {
 
-class ResultWriters final : public analysis::FrameSink {
+/// Writes each frame to the .dat and HDF5 files, and records every attempted increment (from the
+/// increment and cutback events) for the HDF5 /history table.
+class ResultWriters final : public analysis::FrameSink, public analysis::EventSink {
  public:
   /// Opens DIR/JOB.dat and DIR/JOB.hdf.partial.
   ResultWriters(const model::Model& model, const std::filesystem::path& dir,
                 const std::string& job);
   void on_frame(const model::Step& step, const output::Frame& frame) override;
+  void on_event(const analysis::Event& event) override;
   /// Completes the HDF5 file (rename from .partial) and writes the XDMF sidecar.
   void finish();
 
