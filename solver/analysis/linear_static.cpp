@@ -12,7 +12,7 @@
 #include "analysis/element_access.hpp"
 #include "analysis/small_strain_frame.hpp"
 #include "analysis/step_loads.hpp"
-#include "analysis/support_check.hpp"
+#include "analysis/constraint_layout.hpp"
 #include "assembly/assembler.hpp"
 #include "core/parallel.hpp"
 #include "element/solid_linear.hpp"
@@ -73,8 +73,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
   auto wall = [&] { return std::chrono::duration<Real>(Clock::now() - t0).count(); };
 
   // Reused across steps while the constraint layout holds; K does not change in a linear model.
-  std::unique_ptr<assembly::DofMap> dofs;
-  std::unique_ptr<assembly::AssemblyPlan> plan;
+  ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
   linsolve::SpdSolve spd(*solver);
   bool factorised = false;
@@ -88,24 +87,18 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     const Real period = step.procedure.period;
     total_time += period;
 
-    auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries);
-    if (!dofs || !dofs->same_structure(*step_dofs)) {
-      dofs = std::move(step_dofs);
-      check_bodies_supported(model, *dofs);
-      plan = std::make_unique<assembly::AssemblyPlan>(
-          assembly::make_plan(model, *dofs, /*symmetric=*/true, threads));
-      solver->analyze(plan->pattern);
-      factorised = false;
-    }
+    if (layout.update(model, step, *solver, threads)) factorised = false;
+    const assembly::DofMap& dofs = layout.dofs();
+    const assembly::AssemblyPlan& plan = layout.plan();
 
     const VecX dT = temperature_change(model, step);
     const bool has_thermal_strain = dT.size() > 0 && dT.cwiseAbs().maxCoeff() > 0;
     // A linear step is solved once, at its end: every load at its full value.
     const VecX g =
-        prescribed_values(model, step, *dofs, period, total_time, 1.0, u_previous, u_previous);
+        prescribed_values(model, step, dofs, period, total_time, 1.0, u_previous, u_previous);
     assembly::ReducedSystem system;
     assembly::assemble(
-        model, *plan, g,
+        model, plan, g,
         [&](int e, MatX& K, VecX& f) {
           const auto& el = model.mesh.elements[e];
           naming_element(el, [&] {
@@ -120,22 +113,22 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
         },
         threads, system);
     const VecX f_ext = external_forces(model, step, period, total_time, 1.0);
-    require_loads_reach_elements(model, *dofs, f_ext);
-    assembly::add_nodal_forces(*dofs, f_ext, system.rhs);
+    require_loads_reach_elements(model, dofs, f_ext);
+    assembly::add_nodal_forces(dofs, f_ext, system.rhs);
 
     linsolve::SpdSolveReport report;
     VecX x;
     try {
-      if (!factorised) spd.factorise(plan->pattern, system.values, report);
+      if (!factorised) spd.factorise(plan.pattern, system.values, report);
       factorised = true;
-      x = spd.solve(plan->pattern, system.values, system.rhs, report);
+      x = spd.solve(plan.pattern, system.values, system.rhs, report);
     } catch (const linsolve::SingularMatrix& e) {
-      rethrow_singular(model, *dofs, e);
+      rethrow_singular(model, dofs, e);
     }
     if (report.stabilised)
       events.on_event({.kind = Event::Kind::Warning, .step = step_no, .wall_time = wall(),
-                       .message = singular_mode_warning(model, *dofs, report)});
-    const VecX u = dofs->expand(x, g);
+                       .message = singular_mode_warning(model, dofs, report)});
+    const VecX u = dofs.expand(x, g);
     u_previous = u;
 
     output::Frame frame = small_strain_frame(model, u, dT, threads);

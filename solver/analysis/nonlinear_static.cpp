@@ -15,7 +15,7 @@
 #include "analysis/element_access.hpp"
 #include "analysis/small_strain_frame.hpp"
 #include "analysis/step_loads.hpp"
-#include "analysis/support_check.hpp"
+#include "analysis/constraint_layout.hpp"
 #include "assembly/assembler.hpp"
 #include "core/parallel.hpp"
 #include "element/solid_plastic.hpp"
@@ -203,8 +203,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   VecX dT_prev = VecX::Zero(model.n_nodes());
   Real total_time_start = 0, last_q_bar = 0, max_mises = 0;
   int total_iterations = 0;
-  std::unique_ptr<assembly::DofMap> dofs;
-  std::unique_ptr<assembly::AssemblyPlan> plan;
+  ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
   linsolve::SpdSolve spd(*solver);
 
@@ -217,14 +216,9 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                        .message = step.where.file + ":" + std::to_string(step.where.line) +
                                   ": *STATIC has no data line: one increment of 1 over a step "
                                   "time of 1"});
-    auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries);
-    if (!dofs || !dofs->same_structure(*step_dofs)) {
-      dofs = std::move(step_dofs);
-      check_bodies_supported(model, *dofs);
-      plan = std::make_unique<assembly::AssemblyPlan>(
-          assembly::make_plan(model, *dofs, /*symmetric=*/true, threads));
-      solver->analyze(plan->pattern);
-    }
+    layout.update(model, step, *solver, threads);
+    const assembly::DofMap& dofs = layout.dofs();
+    const assembly::AssemblyPlan& plan = layout.plan();
     const Real period = step.procedure.period;
     const VecX u_step_start = u;
     const VecX dT_end = temperature_change(model, step);
@@ -234,7 +228,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     // large pressure-driven rotations).
     const model::Step* previous = s > 0 ? &model.steps[s - 1] : nullptr;
     require_loads_reach_elements(
-        model, *dofs, external_forces(model, step, period, total_time_start + period, 1.0));
+        model, dofs, external_forces(model, step, period, total_time_start + period, 1.0));
     auto loads_at = [&](Real t, const VecX& u_now) {
       const Real ramp = t / period;
       const MatX3 x = step.nlgeom ? MatX3(model.mesh.coords +
@@ -252,13 +246,13 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     const nonlinear::SolutionControls& controls = options.controls ? *options.controls : step.controls;
     nonlinear::Convergence convergence(controls, last_q_bar);
     nonlinear::IncrementControl increments(step_timing(step), controls);
-    VecX x = VecX::Zero(dofs->n_equations());
-    for (int eq = 0; eq < dofs->n_equations(); ++eq) x[eq] = u[dofs->equation_dof(eq)];
+    VecX x = VecX::Zero(dofs.n_equations());
+    for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];
 
     while (!increments.finished()) {
       const Real t = increments.step_time() + increments.increment();
       const Real ramp = t / period;
-      const VecX g = prescribed_values(model, step, *dofs, t, total_time_start + t, ramp,
+      const VecX g = prescribed_values(model, step, dofs, t, total_time_start + t, ramp,
                                        u_step_start, u_step_start);
 
       const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
@@ -266,11 +260,11 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       // Iteration 1 starts from the converged state and moves the prescribed dofs to their new
       // values through the linearised system; later iterations correct the free dofs only.
       const Real t_old = increments.step_time();
-      const VecX g_old = prescribed_values(model, step, *dofs, t_old, total_time_start + t_old,
+      const VecX g_old = prescribed_values(model, step, dofs, t_old, total_time_start + t_old,
                                            t_old / period, u_step_start, u_step_start);
       VecX x_trial = x;
-      VecX u_trial = dofs->expand(x_trial, g_old);
-      const VecX no_step = VecX::Zero(dofs->n_prescribed());
+      VecX u_trial = dofs.expand(x_trial, g_old);
+      const VecX no_step = VecX::Zero(dofs.n_prescribed());
       Evaluation ev;
       for (int it = 1;; ++it) {
         if (options.cancel && options.cancel->load())
@@ -280,14 +274,14 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         nonlinear::Verdict verdict;
         try {
           if (it == 1)
-            ev = evaluate(model, *plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
+            ev = evaluate(model, plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
                           g - g_old, threads);
-          spd.factorise(plan->pattern, ev.system.values, report);
-          x_trial += spd.solve(plan->pattern, ev.system.values, ev.system.rhs, report);
-          const VecX u_new = dofs->expand(x_trial, g);
+          spd.factorise(plan.pattern, ev.system.values, report);
+          x_trial += spd.solve(plan.pattern, ev.system.values, ev.system.rhs, report);
+          const VecX u_new = dofs.expand(x_trial, g);
           const Real c_max = max_abs(u_new - u_trial);
           u_trial = u_new;
-          ev = evaluate(model, *plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
+          ev = evaluate(model, plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
                         no_step, threads);
           verdict = convergence.check(
               it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});

@@ -1,0 +1,19 @@
+#include "analysis/constraint_layout.hpp"
+
+#include "analysis/support_check.hpp"
+
+namespace kontakt::analysis {
+
+bool ConstraintLayout::update(const model::Model& model, const model::Step& step,
+                              linsolve::LinearSolver& solver, int threads) {
+  auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries);
+  if (dofs_ && dofs_->same_structure(*step_dofs)) return false;
+  dofs_ = std::move(step_dofs);
+  check_bodies_supported(model, *dofs_);
+  plan_ = std::make_unique<assembly::AssemblyPlan>(
+      assembly::make_plan(model, *dofs_, /*symmetric=*/true, threads));
+  solver.analyze(plan_->pattern);
+  return true;
+}
+
+}  // namespace kontakt::analysis

@@ -1,0 +1,28 @@
+// The constraint layout of the current step with its assembly plan and symbolic factorisation,
+// shared by the drivers: rebuilt only when a step constrains other dofs than the step before.
+#pragma once
+
+#include <memory>
+
+#include "assembly/assembler.hpp"
+#include "linsolve/linear_solver.hpp"
+#include "model/model.hpp"
+
+namespace kontakt::analysis {
+
+class ConstraintLayout {
+ public:
+  /// Takes `step`'s constraints. When their layout differs from the current one, checks that
+  /// every body is supported, builds the assembly plan and reruns the solver's symbolic
+  /// analysis, and returns true (numeric factorisations must then be redone).
+  bool update(const model::Model& model, const model::Step& step, linsolve::LinearSolver& solver,
+              int threads);
+  const assembly::DofMap& dofs() const { return *dofs_; }
+  const assembly::AssemblyPlan& plan() const { return *plan_; }
+
+ private:
+  std::unique_ptr<assembly::DofMap> dofs_;
+  std::unique_ptr<assembly::AssemblyPlan> plan_;
+};
+
+}  // namespace kontakt::analysis
