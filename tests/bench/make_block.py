@@ -1,7 +1,14 @@
 #!/usr/bin/python3
-"""Writes a linear-elastic cantilever block deck for benchmarks: L x 1 x 1 (L = 10), clamped at
-x = 0, a uniform shear load on the end face, *NODE PRINT of U for the end-face centre line only
-(so output stays cheap). Sizes are chosen by the number of degrees of freedom."""
+"""Writes a linear-elastic cantilever block deck for benchmarks (our own deck, generated from
+scratch): L x 1 x 1 (L = 10), steel (E = 210000, nu = 0.3), clamped at x = 0 (*BOUNDARY 1-3 on
+every node of that face), loaded on the end face x = L by either
+  --load cload     a total shear force `load` in -z spread evenly over the end-face nodes
+                   (*CLOAD; the default: bending), or
+  --load pressure  a pressure `load / area` on the end faces of the last element layer
+                   (*DLOAD, face P4 of C3D8 / C3D20: axial compression),
+one *STEP with *STATIC and *NODE PRINT of U for the end-face centre line only (so output stays
+cheap). C3D8 or C3D20 on an nx x ny x ny grid with nx = 10 ny, the smallest grid with at least
+--dofs degrees of freedom."""
 import argparse
 import math
 
@@ -21,7 +28,8 @@ def grid_size(element, dofs):
     raise ValueError("too many dofs")
 
 
-def write_block(path, element, dofs, nlgeom=False, load=1000.0):
+def write_block(path, element, dofs, nlgeom=False, load=1000.0, load_type="cload"):
+    """Writes the deck; returns (degrees of freedom, elements)."""
     nx, ny, nz = grid_size(element, dofs)
     quadratic = element == "C3D20"
     m = 2 if quadratic else 1  # node lattice step per element
@@ -44,6 +52,7 @@ def write_block(path, element, dofs, nlgeom=False, load=1000.0):
     edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4),
              (0, 4), (1, 5), (2, 6), (3, 7)]
     eid = 0
+    end_elements = []
     for k in range(nz):
         for j in range(ny):
             for i in range(nx):
@@ -54,6 +63,8 @@ def write_block(path, element, dofs, nlgeom=False, load=1000.0):
                         p, q = base[a], base[b]
                         nodes.append(ids[tuple((x + y) // 2 for x, y in zip(p, q))])
                 eid += 1
+                if i == nx - 1:
+                    end_elements.append(eid)
                 text = f"{eid}, " + ", ".join(map(str, nodes))
                 if len(nodes) > 15:  # continuation line, as in ccx decks
                     head = ", ".join(map(str, nodes[:15]))
@@ -72,8 +83,11 @@ def write_block(path, element, dofs, nlgeom=False, load=1000.0):
               "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL",
               "*BOUNDARY", "FIX, 1, 3"]
     lines += ["*STEP, NLGEOM", "*STATIC", "0.25, 1.0"] if nlgeom else ["*STEP", "*STATIC"]
-    lines += ["*CLOAD", f"TIP, 3, {-load / len(tip):.12g}",
-              "*NODE PRINT, NSET=TIPLINE", "U", "*END STEP"]
+    if load_type == "pressure":  # face 4 (nodes 2-6-7-3) is the x = +1 face of C3D8/C3D20
+        lines += ["*DLOAD"] + [f"{e}, P4, {load:.12g}" for e in end_elements]
+    else:
+        lines += ["*CLOAD", f"TIP, 3, {-load / len(tip):.12g}"]
+    lines += ["*NODE PRINT, NSET=TIPLINE", "U", "*END STEP"]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return 3 * len(ids), eid
@@ -84,6 +98,8 @@ if __name__ == "__main__":
     p.add_argument("path")
     p.add_argument("--element", choices=["C3D8", "C3D20"], default="C3D8")
     p.add_argument("--dofs", type=int, default=300000)
+    p.add_argument("--load", choices=["cload", "pressure"], default="cload")
+    p.add_argument("--magnitude", type=float, default=1000.0, help="total force (end area is 1)")
     a = p.parse_args()
-    n_dofs, n_el = write_block(a.path, a.element, a.dofs)
+    n_dofs, n_el = write_block(a.path, a.element, a.dofs, load=a.magnitude, load_type=a.load)
     print(f"{a.path}: {a.element}, {n_el} elements, {n_dofs} dofs")

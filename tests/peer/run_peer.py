@@ -1,11 +1,25 @@
 #!/usr/bin/python3
 """Peer test: every qualifying ccx test deck through ccx 2.20 and `kontakt solve`, .dat blocks
-compared (see deck_rule.py for the rule and compare_dat.py for the measure).
+compared (select_decks.py holds the rule, compare_dat.py the measure).
 
-The reference is ccx 2.20's own output, regenerated here (the suite's .dat.ref files come from
-ccx 2.11). Decks that ask ccx for its iterative solver (*STATIC, SOLVER=ITERATIVE ...) get their
-reference from ccx's default direct solver instead: the iterative solver stops at a residual
-tolerance far looser than this comparison. Prints one line per deck and `N passed, M failed`.
+For each deck the deck and its *INCLUDE files are written, decompressed, into a work folder;
+`ccx -i NAME` there gives the reference NAME.dat (cached under WORK/ccx_cache by a hash of the
+deck's and its includes' content, so reruns only run kontakt); `KONTAKT solve NAME.inp -o out`
+in a second folder gives ours. The reference is ccx 2.20's own output (the suite's .dat.ref
+files come from ccx 2.11). Decks that ask ccx for its iterative solver (*STATIC,
+SOLVER=ITERATIVE ...) get their reference from ccx's default direct solver instead: the
+iterative solver stops at a residual tolerance far looser than this comparison.
+
+Prints one line per deck (deck, element types, status, worst block error, detail) and a last
+line `N passed, M failed`; exits 0 only when every deck passed.
+Statuses: PASS; FAIL (worst block error above the tolerance, or a structural mismatch);
+ERROR (kontakt's exit code and the first line of its stderr, or no reference);
+TIMEOUT (kontakt ran longer than --timeout).
+
+--reference-only runs no kontakt: it compares ccx 2.20's output with the suite's 2.11
+.dat.ref files for the qualifying decks and counts agreement at 1e-4 and 1e-3 (a check of this
+harness and of how stable ccx's own output is; exit code 0 unless a reference could not be
+made).
 """
 import argparse
 import concurrent.futures
@@ -13,64 +27,79 @@ import hashlib
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_dat  # noqa: E402
-import deck_rule  # noqa: E402
+import select_decks  # noqa: E402
 
-DEFAULT_SUITE = "/usr/share/doc/calculix-ccx-test/examples/test"
+DEFAULT_SUITE = select_decks.DEFAULT_SUITE
+CCX_TIMEOUT = 300
 ITERATIVE_SOLVER = re.compile(r"(?im)^(\*STATIC[^\n]*?),\s*SOLVER\s*=\s*ITERATIVE[^,\n]*")
 
 
-def included_files(deck_file):
-    """Relative names of every file the deck includes (recursively), in the deck's folder."""
-    out, todo = [], [deck_file]
-    while todo:
-        text = deck_rule.read_text(todo.pop())
-        for m in re.finditer(r"(?im)^\*INCLUDE\s*,\s*INPUT\s*=\s*([^\s,]+)", text):
-            name = m.group(1)
-            if name not in out:
-                out.append(name)
-                todo.append(os.path.join(os.path.dirname(deck_file), name))
-    return out
+def direct_solver(text):
+    """Deck text with SOLVER=ITERATIVE... removed from *STATIC (ccx's direct solver instead)."""
+    return ITERATIVE_SOLVER.sub(r"\1", text)
 
 
 def stage_deck(source_dir, name, dest, transform=None):
-    """Writes NAME.inp and its includes, decompressed, into dest; returns the deck's text."""
+    """Writes NAME.inp and its includes, decompressed, into dest."""
     os.makedirs(dest, exist_ok=True)
-    deck_file = os.path.join(source_dir, name + ".inp")
-    text = deck_rule.read_text(deck_file)
+    deck_file = select_decks.deck_path(source_dir, name)
+    text = select_decks.read_text(deck_file)
     with open(os.path.join(dest, name + ".inp"), "w") as f:
         f.write(transform(text) if transform else text)
-    for inc in included_files(deck_file):
+    for inc in select_decks.included_files(deck_file):
         target = os.path.join(dest, inc)
         os.makedirs(os.path.dirname(target), exist_ok=True)
         with open(target, "w") as f:
-            f.write(deck_rule.read_text(os.path.join(source_dir, inc)))
-    return text
+            f.write(select_decks.read_text(os.path.join(source_dir, inc)))
+
+
+def deck_digest(source_dir, name):
+    deck_file = select_decks.deck_path(source_dir, name)
+    digest = hashlib.sha256()
+    for part in [deck_file] + [os.path.join(source_dir, i)
+                               for i in select_decks.included_files(deck_file)]:
+        digest.update(select_decks.read_text(part).encode())
+    return digest.hexdigest()[:16]
+
+
+def work_root(work, source_dir):
+    """Work subfolder of a deck folder: WORK for the suite, WORK/extra-<hash> for others."""
+    if os.path.abspath(source_dir) == os.path.abspath(DEFAULT_SUITE):
+        return work
+    return os.path.join(work, "extra-" + hashlib.sha256(
+        os.path.abspath(source_dir).encode()).hexdigest()[:8])
 
 
 def ccx_reference(source_dir, name, work):
     """Path of ccx 2.20's .dat for the deck, computed once per deck content (cached)."""
-    deck_file = os.path.join(source_dir, name + ".inp")
-    digest = hashlib.sha256()
-    for part in [deck_file] + [os.path.join(source_dir, i) for i in included_files(deck_file)]:
-        digest.update(deck_rule.read_text(part).encode())
-    cached = os.path.join(work, "ccx_cache", f"{name}-{digest.hexdigest()[:16]}.dat")
+    work = work_root(work, source_dir)
+    cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name)}.dat")
     if os.path.exists(cached):
         return cached
     run_dir = os.path.join(work, name, "ccx")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir, lambda t: ITERATIVE_SOLVER.sub(r"\1", t))
+    stage_deck(source_dir, name, run_dir, direct_solver)
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
-    subprocess.run(["ccx", "-i", name], cwd=run_dir, env=env, capture_output=True, timeout=600)
+    try:
+        proc = run_killable(["ccx", "-i", name], run_dir, CCX_TIMEOUT, env)
+    except subprocess.TimeoutExpired:
+        raise RuntimeError(f"ccx ran longer than {CCX_TIMEOUT} s")
     produced = os.path.join(run_dir, name + ".dat")
+    if proc.returncode != 0 or "Job finished" not in proc.stdout:
+        lines = [ln for ln in proc.stdout.splitlines() if "ERROR" in ln] or ["no 'Job finished'"]
+        raise RuntimeError(f"ccx exit {proc.returncode}: {lines[0].strip()}")
     if not os.path.exists(produced) or os.path.getsize(produced) == 0:
         raise RuntimeError("ccx produced no .dat")
     os.makedirs(os.path.dirname(cached), exist_ok=True)
-    shutil.copy(produced, cached)
+    shutil.copy(produced, cached + ".part")
+    os.replace(cached + ".part", cached)
     return cached
 
 
@@ -88,54 +117,102 @@ def sta_counts(path):
     return increments, iterations
 
 
+def run_killable(cmd, cwd, timeout, env=None):
+    """subprocess.run in a session of its own: on timeout the whole process group is killed
+    (a wrapper script's children included) and TimeoutExpired raised."""
+    with subprocess.Popen(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          text=True, errors="replace", start_new_session=True) as proc:
+        try:
+            out, err = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
+            raise
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
+
+
+def describe(comparison):
+    """Detail text of a failed comparison: the first problems, or the worst block."""
+    if comparison.problems:
+        return "; ".join(comparison.problems[:2])
+    worst = comparison.worst_block()
+    return f"worst block {worst.index}: {worst.header}" if worst else ""
+
+
 def run_one(source_dir, name, args):
-    """(status, detail, worst error) for one deck."""
+    """(status, worst error or None, detail) for one deck."""
     try:
         reference = ccx_reference(source_dir, name, args.work)
     except Exception as e:  # a broken reference is a setup failure of this deck
-        return "ERROR", f"reference: {e}", None
-    run_dir = os.path.join(args.work, name, "kontakt")
+        return "ERROR", None, f"reference: {e}"
+    run_dir = os.path.join(work_root(args.work, source_dir), name, "kontakt")
     shutil.rmtree(run_dir, ignore_errors=True)
     stage_deck(source_dir, name, run_dir)
     try:
-        proc = subprocess.run([args.kontakt, "solve", name + ".inp", "-o", "out", "--quiet",
-                               "--threads", "1"], cwd=run_dir, capture_output=True, text=True,
-                              timeout=args.timeout)
+        proc = run_killable([args.kontakt, "solve", name + ".inp", "-o", "out", "--quiet",
+                             "--threads", "1"], run_dir, args.timeout)
     except subprocess.TimeoutExpired:
-        return "TIMEOUT", f"> {args.timeout} s", None
+        return "TIMEOUT", None, f"> {args.timeout} s"
     if proc.returncode != 0:
-        first = (proc.stderr.strip().splitlines() or ["(no message)"])[-1]
-        return "ERROR", f"exit {proc.returncode}: {first}", None
-    with open(os.path.join(run_dir, "out", name + ".dat")) as f:
-        ours = f.read()
-    with open(reference) as f:
-        worst, problems = compare_dat.compare(ours, f.read(), common_times_only=args.nlgeom)
-    detail = ""
+        first = next((ln.strip() for ln in proc.stderr.splitlines() if ln.strip()),
+                     "(no message)")
+        return "ERROR", None, f"exit {proc.returncode}: {first}"
+    ours_path = os.path.join(run_dir, "out", name + ".dat")
+    if not os.path.exists(ours_path):
+        return "ERROR", None, f"exit 0 but no out/{name}.dat"
+    with open(ours_path, errors="replace") as f, open(reference) as g:
+        result = compare_dat.compare_blocks(f.read(), g.read(), args.tolerance,
+                                            common_times_only=args.nlgeom)
+    detail = describe(result) if not result.passed else ""
     if args.nlgeom:  # incrementation side by side: increments/iterations, ours vs ccx
         ours_sta = sta_counts(os.path.join(run_dir, "out", name + ".sta"))
-        ccx_sta = sta_counts(os.path.join(args.work, name, "ccx", name + ".sta"))
+        ccx_sta = sta_counts(os.path.join(work_root(args.work, source_dir), name, "ccx",
+                                              name + ".sta"))
         if ours_sta and ccx_sta:
-            detail = f"increments/iterations {ours_sta[0]}/{ours_sta[1]} (ccx {ccx_sta[0]}/{ccx_sta[1]})"
-    if problems:
-        return "FAIL", "; ".join(problems[:2]), worst
-    return ("PASS" if worst <= args.tolerance else "FAIL"), detail, worst
+            detail = (f"increments/iterations {ours_sta[0]}/{ours_sta[1]} "
+                      f"(ccx {ccx_sta[0]}/{ccx_sta[1]}) {detail}").strip()
+    return ("PASS" if result.passed else "FAIL"), result.worst, detail
+
+
+def reference_only(source_dir, name, args):
+    """(status, worst error or None, detail): ccx 2.20 against the suite's 2.11 .dat.ref."""
+    try:
+        reference = ccx_reference(source_dir, name, args.work)
+        old = select_decks.read_text(os.path.join(source_dir, name + ".dat.ref"))
+    except Exception as e:
+        return "ERROR", None, str(e)
+    with open(reference) as f:
+        result = compare_dat.compare_blocks(f.read(), old, args.tolerance,
+                                            common_times_only=args.nlgeom)
+    return ("PASS" if result.passed else "FAIL"), result.worst, describe(result)
+
+
+def label(folder, name, args):
+    """Deck name as shown: bare for the suite, FOLDER/NAME for --extra-decks folders."""
+    if os.path.abspath(folder) == os.path.abspath(args.suite):
+        return name
+    return f"{os.path.basename(os.path.normpath(folder))}/{name}"
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--kontakt", help="path of the kontakt executable")
     p.add_argument("--suite", default=DEFAULT_SUITE, help="ccx test deck folder")
-    p.add_argument("--extra-decks", action="append", default=[],
-                   help="further folders of decks, run through the same rule")
-    p.add_argument("--work", default="peer_work", help="scratch folder (ccx results are cached)")
-    p.add_argument("--only", nargs="+", help="run just these decks")
+    p.add_argument("--extra-decks", action="append", default=[], metavar="DIR",
+                   help="a further folder of decks (e.g. hidden ones), run through the same "
+                        "rule; repeatable")
+    p.add_argument("--work", help="scratch folder, ccx results cached in it (default: a new "
+                                  "temporary folder)")
+    p.add_argument("--only", nargs="+", metavar="NAME", help="run just these decks")
     p.add_argument("--nlgeom", action="store_true",
                    help="the nonlinear set: decks with NLGEOM steps, final blocks compared")
     p.add_argument("--tolerance", type=float, default=None,
                    help="largest block error (default 1e-4, with --nlgeom 1e-3)")
-    p.add_argument("--timeout", type=int, default=300)
-    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--timeout", type=int, default=300, help="kontakt time limit per deck (s)")
+    p.add_argument("--jobs", type=int, default=2, help="decks run in parallel")
     p.add_argument("--list", action="store_true", help="print the rule's verdict per deck and exit")
+    p.add_argument("--reference-only", action="store_true",
+                   help="no kontakt: compare ccx 2.20 with the suite's 2.11 .dat.ref files")
     args = p.parse_args()
     if args.tolerance is None:
         args.tolerance = 1e-3 if args.nlgeom else 1e-4
@@ -143,12 +220,12 @@ def main():
     folders = [args.suite] + args.extra_decks
     missing = [d for d in folders if not os.path.isdir(d)]
     if missing:
-        print(f"deck folder(s) not found: {', '.join(missing)} "
-              "(install calculix-ccx-test: deploy/install-deps.sh)")
+        print(f"deck folder(s) not found: {', '.join(missing)} -- this is a setup error: "
+              "install calculix-ccx-test (deploy/install-deps.sh)")
         return 1
     decks = []
     for folder in folders:
-        good, excluded = deck_rule.qualifying_decks(folder, args.nlgeom)
+        good, excluded = select_decks.qualifying_decks(folder, args.nlgeom)
         if args.list:
             for name in sorted(set(good) | set(excluded)):
                 print(f"{name:24s} {'qualifies' if name in good else 'excluded: ' + excluded[name]}")
@@ -156,25 +233,59 @@ def main():
         decks += [(folder, n) for n in good if not args.only or n in args.only]
     if args.list:
         return 0
-    if not args.kontakt:
-        p.error("--kontakt is required")
-    args.kontakt = os.path.abspath(args.kontakt)
-    args.work = os.path.abspath(args.work)
+    if args.only:
+        unknown = set(args.only) - {n for _, n in decks}
+        if unknown:
+            print(f"not qualifying decks (or unknown): {' '.join(sorted(unknown))}")
+            return 1
+    if not args.kontakt and not args.reference_only:
+        p.error("--kontakt is required (or --reference-only)")
     if shutil.which("ccx") is None:
-        print("ccx not found (install calculix-ccx: deploy/install-deps.sh)")
+        print("ccx not found -- install calculix-ccx (deploy/install-deps.sh)")
         return 1
+    args.work = os.path.abspath(args.work or tempfile.mkdtemp(prefix="kontakt_peer_"))
+    os.makedirs(args.work, exist_ok=True)
+    if args.kontakt:
+        args.kontakt = os.path.abspath(args.kontakt)
 
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+    if args.reference_only:
+        return main_reference_only(decks, args)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         results = list(pool.map(lambda d: run_one(d[0], d[1], args), decks))
     passed = 0
-    print(f"{'deck':24s} {'status':8s} {'worst error':>12s}  detail")
-    for (folder, name), (status, detail, worst) in zip(decks, results):
+    print(f"{'deck':20s} {'elements':16s} {'status':8s} {'worst error':>11s}  detail")
+    for (folder, name), (status, worst, detail) in zip(decks, results):
         passed += status == "PASS"
+        types = ",".join(select_decks.element_types(select_decks.deck_path(folder, name)))
         shown = "-" if worst is None else f"{worst:.2e}"
-        print(f"{name:24s} {status:8s} {shown:>12s}  {detail}")
-    print(f"tolerance {args.tolerance:g} on max|ours - ccx| / max|ccx| per .dat block")
+        print(f"{label(folder, name, args):20s} {types:16s} {status:8s} {shown:>11s}  {detail}", flush=True)
+    print(f"work folder {args.work}; tolerance {args.tolerance:g} on "
+          "max|ours - ccx| / max|ccx| per .dat block")
     print(f"{passed} passed, {len(decks) - passed} failed")
     return 0 if passed == len(decks) else 1
+
+
+def main_reference_only(decks, args):
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        results = list(pool.map(lambda d: reference_only(d[0], d[1], args), decks))
+    print("ccx 2.20 (reference, direct solver) against the suite's ccx 2.11 .dat.ref")
+    print(f"{'deck':20s} {'elements':16s} {'2.20 vs 2.11':>12s}  detail")
+    counts = {1e-4: 0, 1e-3: 0}
+    errors = 0
+    for (folder, name), (status, worst, detail) in zip(decks, results):
+        types = ",".join(select_decks.element_types(select_decks.deck_path(folder, name)))
+        if status == "ERROR":
+            errors += 1
+            shown = "ERROR"
+        else:
+            shown = f"{worst:.2e}"
+            for tol in counts:
+                counts[tol] += worst <= tol
+            detail = detail if worst > 1e-4 else ""
+        print(f"{label(folder, name, args):20s} {types:16s} {shown:>12s}  {detail}")
+    for tol, n in counts.items():
+        print(f"agree at {tol:g}: {n} of {len(decks)}")
+    return 1 if errors else 0
 
 
 if __name__ == "__main__":

@@ -1,0 +1,239 @@
+#!/usr/bin/python3
+"""The written, mechanical rule that decides which ccx test decks the peer test runs.
+
+The whole rule is `exclusion_reason()`: a deck qualifies when it returns None. The deck is
+read with every *INCLUDE expanded (relative to the including file, gzipped files read
+transparently); comment lines (`**`) are ignored; keywords and parameter names are compared
+upper-case with runs of blanks collapsed. The checks run record by record in deck order, and
+the FIRST check a deck breaks is its exclusion reason:
+
+  (a) every *ELEMENT has TYPE= one of ELEMENT_TYPES
+      (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R);
+  (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
+      - no parameter in FORBIDDEN_PARAMETERS (TIME DELAY, USER) on any keyword;
+      - *ELASTIC and *EXPANSION: TYPE= absent or ISO, exactly one data line (no table);
+      - *SOLID SECTION: no ORIENTATION=;
+      - *INITIAL CONDITIONS: TYPE=TEMPERATURE only;
+      - *BOUNDARY: first and last dof within 1-3; *CLOAD: dof within 1-3;
+      - *DLOAD: load label P1-P6 only (face pressures);
+      - *STEP: no NLGEOM (unless NLGEOM=NO), no PERTURBATION;
+      - *NODE PRINT: variables from NODE_PRINT_VARIABLES (U, RF) only;
+        *EL PRINT: variables from EL_PRINT_VARIABLES (S, E, EVOL, ENER, ELSE) only
+        (a deck printing any other variable is excluded: there is nothing to compare it with);
+  (c) the deck has at least one *NODE PRINT or *EL PRINT (else there is nothing to compare).
+
+The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same rule except
+that it requires a *STEP with NLGEOM instead of forbidding it, and excludes C3D8I.
+
+Usable as a module (`exclusion_reason`, `qualifying_decks`, `element_types`, `read_text`,
+`included_files`) and as a CLI:
+    select_decks.py [--suite DIR] [--nlgeom]   excluded decks with reasons, grouped counts,
+                                               then the qualifying names
+    select_decks.py --list                     only the qualifying names, one per line
+"""
+import argparse
+import collections
+import gzip
+import os
+import re
+import sys
+
+DEFAULT_SUITE = "/usr/share/doc/calculix-ccx-test/examples/test"
+
+ELEMENT_TYPES = {"C3D4", "C3D6", "C3D8", "C3D8R", "C3D8I", "C3D10", "C3D15", "C3D20", "C3D20R"}
+SUPPORTED_KEYWORDS = {
+    "HEADING", "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "ELASTIC", "DENSITY",
+    "EXPANSION", "SOLID SECTION", "INITIAL CONDITIONS", "TEMPERATURE", "BOUNDARY", "CLOAD",
+    "DLOAD", "EQUATION", "AMPLITUDE", "STEP", "STATIC", "END STEP", "NODE PRINT", "EL PRINT",
+    "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT", "CONTROLS",
+}
+FORBIDDEN_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
+NODE_PRINT_VARIABLES = {"U", "RF"}
+EL_PRINT_VARIABLES = {"S", "E", "EVOL", "ENER", "ELSE"}
+
+_INCLUDE = re.compile(r"(?im)^\s*\*\s*INCLUDE\s*,\s*INPUT\s*=\s*([^\s,]+)")
+
+
+# ----------------------------------------------------------------------------- reading decks
+
+def read_text(path):
+    """Text of a deck or include file, read from `path` or, failing that, `path.gz`."""
+    for candidate in (path, path + ".gz"):
+        if os.path.exists(candidate):
+            opener = gzip.open if candidate.endswith(".gz") else open
+            with opener(candidate, "rt", errors="replace") as f:
+                return f.read()
+    raise FileNotFoundError(path)
+
+
+def deck_names(folder):
+    """Names (without .inp / .inp.gz) of every deck in a folder, sorted."""
+    return sorted({f[:-4] if f.endswith(".inp") else f[:-7] for f in os.listdir(folder)
+                   if f.endswith(".inp") or f.endswith(".inp.gz")})
+
+
+def deck_path(folder, name):
+    """Path of NAME's deck in folder without any .gz suffix (read_text finds either form)."""
+    return os.path.join(folder, name + ".inp")
+
+
+def included_files(deck_file):
+    """Names (as written in *INCLUDE, relative to the deck's folder) of every file the deck
+    includes, recursively, without duplicates."""
+    out, todo = [], [deck_file]
+    while todo:
+        text = read_text(todo.pop())
+        for m in _INCLUDE.finditer(text):
+            name = m.group(1).strip("\"'")
+            if name not in out:
+                out.append(name)
+                todo.append(os.path.join(os.path.dirname(deck_file), name))
+    return out
+
+
+def _normalise(word):
+    return re.sub(r"\s+", " ", word.strip().upper())
+
+
+def records(path, _seen=None):
+    """(KEYWORD, {PARAM: value}, [data lines]) of a deck in order, *INCLUDEs expanded."""
+    _seen = set() if _seen is None else _seen
+    base = path[:-3] if path.endswith(".gz") else path
+    if base in _seen:
+        return
+    _seen.add(base)
+    current = None
+    for raw in read_text(base).splitlines():
+        line = raw.strip()
+        if not line or line.startswith("**"):
+            continue
+        if line.startswith("*"):
+            if current:
+                yield current
+            parts = line[1:].split(",")
+            keyword = _normalise(parts[0])
+            params = {}
+            for p in parts[1:]:
+                if p.strip():
+                    k, _, v = p.partition("=")
+                    params[_normalise(k)] = v.strip()
+            if keyword == "INCLUDE":
+                current = None
+                inc = params.get("INPUT", "").strip("\"'")
+                yield from records(os.path.join(os.path.dirname(base), inc), _seen)
+                continue
+            current = (keyword, params, [])
+        elif current:
+            current[2].append(line)
+    if current:
+        yield current
+
+
+def element_types(path):
+    """Sorted element TYPE= values of a deck (for reports)."""
+    return sorted({p.get("TYPE", "?").upper() for k, p, _ in records(path) if k == "ELEMENT"})
+
+
+# ----------------------------------------------------------------------------------- the rule
+
+def exclusion_reason(path, nlgeom=False):
+    """THE qualification rule (see the module docstring): None when the deck at `path`
+    qualifies, otherwise a short text naming the first check it breaks."""
+    try:
+        recs = list(records(path))
+    except (OSError, UnicodeError) as e:
+        return f"unreadable: {e}"
+    prints, has_nlgeom = 0, False
+    for keyword, params, data in recs:
+        if keyword == "ELEMENT":  # (a)
+            etype = params.get("TYPE", "").upper()
+            if etype not in ELEMENT_TYPES:
+                return f"element {etype or '(no TYPE)'}"
+            if nlgeom and etype == "C3D8I":
+                return "C3D8I under NLGEOM"
+            continue
+        if keyword not in SUPPORTED_KEYWORDS:  # (b)
+            return f"keyword *{keyword}"
+        forbidden = FORBIDDEN_PARAMETERS.intersection(params)
+        if forbidden:
+            return f"*{keyword}, {sorted(forbidden)[0]}"
+        if keyword in ("ELASTIC", "EXPANSION"):
+            if params.get("TYPE", "ISO").upper() not in ("ISO", "ISOTROPIC"):
+                return f"*{keyword}, TYPE={params['TYPE'].upper()}"
+            if len(data) != 1:
+                return f"*{keyword} with {len(data)} data lines (table)"
+        elif keyword == "SOLID SECTION" and "ORIENTATION" in params:
+            return "*SOLID SECTION, ORIENTATION"
+        elif keyword == "INITIAL CONDITIONS" and params.get("TYPE", "").upper() != "TEMPERATURE":
+            return f"*INITIAL CONDITIONS, TYPE={params.get('TYPE', '?').upper()}"
+        elif keyword in ("BOUNDARY", "CLOAD"):
+            for line in data:
+                fields = [f.strip() for f in line.split(",")]
+                dofs = [f for f in (fields[1:3] if keyword == "BOUNDARY" else fields[1:2]) if f]
+                if any(not d.isdigit() or not 1 <= int(d) <= 3 for d in dofs):
+                    return f"*{keyword} dof outside 1-3"
+        elif keyword == "DLOAD":
+            for line in data:
+                fields = [f.strip().upper() for f in line.split(",")]
+                if len(fields) < 2 or not re.fullmatch(r"P[1-6]", fields[1]):
+                    label = fields[1] if len(fields) > 1 else "?"
+                    return f"*DLOAD {re.sub(r'[0-9]+$', 'n', label)} (not Pn)"
+        elif keyword == "STEP":
+            flag = params.get("NLGEOM")
+            if flag is not None and flag.upper() != "NO":
+                if not nlgeom:
+                    return "*STEP, NLGEOM"
+                has_nlgeom = True
+            if "PERTURBATION" in params:
+                return "*STEP, PERTURBATION"
+        elif keyword in ("NODE PRINT", "EL PRINT"):
+            allowed = NODE_PRINT_VARIABLES if keyword == "NODE PRINT" else EL_PRINT_VARIABLES
+            for line in data:
+                for var in (_normalise(v) for v in line.split(",")):
+                    if var and var not in allowed:
+                        return f"*{keyword} of {var}"
+            prints += 1
+    if prints == 0:  # (c)
+        return "no *NODE PRINT / *EL PRINT"
+    if nlgeom and not has_nlgeom:
+        return "no NLGEOM step"
+    return None
+
+
+def qualifying_decks(folder, nlgeom=False):
+    """(qualifying names, {excluded name: reason}) over every deck in the folder."""
+    good, excluded = [], {}
+    for name in deck_names(folder):
+        reason = exclusion_reason(deck_path(folder, name), nlgeom)
+        if reason is None:
+            good.append(name)
+        else:
+            excluded[name] = reason
+    return good, excluded
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--suite", default=DEFAULT_SUITE, help="deck folder (default: %(default)s)")
+    p.add_argument("--nlgeom", action="store_true", help="the nonlinear set instead")
+    p.add_argument("--list", action="store_true", help="print only the qualifying names")
+    a = p.parse_args(argv)
+    if not os.path.isdir(a.suite):
+        print(f"deck folder not found: {a.suite} (install calculix-ccx-test)", file=sys.stderr)
+        return 1
+    good, excluded = qualifying_decks(a.suite, a.nlgeom)
+    if a.list:
+        print("\n".join(good))
+        return 0
+    for name, reason in excluded.items():
+        print(f"excluded {name:24s} {reason}")
+    print(f"\nexclusion reasons ({len(excluded)} decks):")
+    for reason, count in collections.Counter(excluded.values()).most_common():
+        print(f"  {count:4d}  {reason}")
+    print(f"\n{len(good)} qualifying decks:")
+    print("\n".join(good))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

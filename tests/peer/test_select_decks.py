@@ -1,0 +1,101 @@
+"""Unit tests of the deck qualification rule (run: /usr/bin/python3 -m unittest)."""
+import gzip
+import os
+import tempfile
+import unittest
+
+from select_decks import exclusion_reason, qualifying_decks
+
+GOOD = """*HEADING
+a cube
+** comment *FREQUENCY
+*NODE, NSET=NALL
+1, 0, 0, 0
+*ELEMENT, TYPE=C3D8, ELSET=EALL
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*MATERIAL, NAME=M
+*ELASTIC
+210000, 0.3
+*SOLID SECTION, ELSET=EALL, MATERIAL=M
+*BOUNDARY
+NALL, 1, 3
+*STEP
+*STATIC
+*CLOAD
+1, 3, 1.
+*DLOAD
+EALL, P2, 1.
+*NODE PRINT, NSET=NALL
+U, RF
+*EL PRINT, ELSET=EALL
+S, E
+*END STEP
+"""
+
+
+class SelectDecks(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def deck(self, text, name="d"):
+        path = os.path.join(self.dir, name + ".inp")
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_good_deck_qualifies(self):
+        self.assertIsNone(exclusion_reason(self.deck(GOOD)))
+
+    def test_each_check_names_its_reason(self):
+        cases = {
+            ("TYPE=C3D8,", "TYPE=S8,"): "element S8",
+            ("*STEP\n", "*STEP\n*FREQUENCY\n"): "keyword *FREQUENCY",
+            ("*ELASTIC\n", "*ELASTIC, TYPE=ORTHO\n"): "*ELASTIC, TYPE=ORTHO",
+            ("210000, 0.3\n", "210000, 0.3, 0\n200000, 0.3, 100\n"): "*ELASTIC with 2 data lines (table)",
+            ("MATERIAL=M\n", "MATERIAL=M, ORIENTATION=OR\n"): "*SOLID SECTION, ORIENTATION",
+            ("NALL, 1, 3", "NALL, 1, 6"): "*BOUNDARY dof outside 1-3",
+            ("1, 3, 1.", "1, 5, 1."): "*CLOAD dof outside 1-3",
+            ("EALL, P2, 1.", "EALL, GRAV, 9.81, 0, 0, -1"): "*DLOAD GRAV (not Pn)",
+            ("*STEP\n", "*STEP, NLGEOM\n"): "*STEP, NLGEOM",
+            ("*STEP\n", "*STEP, PERTURBATION\n"): "*STEP, PERTURBATION",
+            ("U, RF", "U, NT"): "*NODE PRINT of NT",
+            ("S, E", "S, PEEQ"): "*EL PRINT of PEEQ",
+            ("*CLOAD\n", "*CLOAD, AMPLITUDE=A, TIME DELAY=1\n"): "*CLOAD, TIME DELAY",
+        }
+        for (old, new), reason in cases.items():
+            with self.subTest(reason=reason):
+                self.assertIn(old, GOOD)
+                self.assertEqual(exclusion_reason(self.deck(GOOD.replace(old, new, 1))), reason)
+
+    def test_nothing_printed(self):
+        text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")
+        self.assertEqual(exclusion_reason(self.deck(text)), "no *NODE PRINT / *EL PRINT")
+
+    def test_first_violation_wins(self):
+        text = GOOD.replace("TYPE=C3D8,", "TYPE=B32,").replace("*STEP\n", "*STEP, NLGEOM\n")
+        self.assertEqual(exclusion_reason(self.deck(text)), "element B32")
+
+    def test_gzipped_include_is_resolved(self):
+        with gzip.open(os.path.join(self.dir, "mesh.msh.gz"), "wt") as f:
+            f.write("*ELEMENT, TYPE=CAX8, ELSET=E2\n1, 1, 2, 3, 4, 5, 6, 7, 8\n")
+        text = GOOD.replace("*MATERIAL", "*INCLUDE, INPUT=mesh.msh\n*MATERIAL")
+        self.assertEqual(exclusion_reason(self.deck(text)), "element CAX8")
+
+    def test_qualifying_decks_over_a_folder(self):
+        self.deck(GOOD, "good")
+        with gzip.open(os.path.join(self.dir, "zipped.inp.gz"), "wt") as f:
+            f.write(GOOD.replace("TYPE=C3D8,", "TYPE=C3D20R,"))
+        self.deck(GOOD.replace("*STEP\n", "*STEP, NLGEOM\n"), "nl")
+        good, excluded = qualifying_decks(self.dir)
+        self.assertEqual(good, ["good", "zipped"])
+        self.assertEqual(excluded, {"nl": "*STEP, NLGEOM"})
+        good, _ = qualifying_decks(self.dir, nlgeom=True)
+        self.assertEqual(good, ["nl"])
+
+
+if __name__ == "__main__":
+    unittest.main()
