@@ -9,7 +9,6 @@
 
 namespace kontakt::contact {
 
-using Vec2 = Eigen::Matrix<Real, 2, 1>;
 /// Vertices in order; counter-clockwise for positive area.
 using Polygon2 = std::vector<Vec2>;
 

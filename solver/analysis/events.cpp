@@ -35,12 +35,18 @@ std::string to_json_line(const Event& e) {
   }
   if (e.residual >= 0) j["residual"] = e.residual;
   if (e.correction >= 0) j["correction"] = e.correction;
+  if (e.contact_elements >= 0) j["contact_elements"] = e.contact_elements;
   if (!e.status.empty()) j["status"] = e.status;
   if (!e.message.empty()) j["message"] = e.message;
   if (e.kind == Event::Kind::Done) {
     j["summary"] = {{"iterations", e.iterations},
                     {"max_displacement", e.max_displacement},
                     {"max_mises", e.max_mises}};
+    if (e.has_contact) {
+      j["summary"]["max_contact_pressure"] = e.max_contact_pressure;
+      j["summary"]["total_contact_force"] = e.total_contact_force;
+      j["summary"]["drift_redos"] = e.drift_redos;
+    }
   }
   j["wall_time"] = e.wall_time;
   return j.dump();

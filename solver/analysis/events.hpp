@@ -14,12 +14,16 @@ struct Event {
   int step = 0, increment = 0, attempt = 0, iteration = 0;
   Real step_time = 0, total_time = 0, dt = 0;
   Real residual = -1, correction = -1;  ///< ccx-style ratios in %, -1 when not measured
+  int contact_elements = -1;            ///< active contact elements, -1 for models without contact
   Real wall_time = 0;                   ///< seconds since the run started
   std::string status{};                 ///< Done: converged | not_converged | input_error | error
   std::string message{};                ///< Warning, Error and Done: human-readable text
   // Done summary
   int iterations = 0;
   Real max_displacement = 0, max_mises = 0;
+  bool has_contact = false;             ///< the contact figures below apply
+  Real max_contact_pressure = 0, total_contact_force = 0;
+  int drift_redos = 0;                  ///< increments redone because frozen projections drifted
 };
 
 class EventSink {

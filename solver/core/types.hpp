@@ -9,6 +9,7 @@ namespace kontakt {
 using Real = double;
 using Index = std::int64_t;
 
+using Vec2 = Eigen::Matrix<Real, 2, 1>;
 using Vec3 = Eigen::Matrix<Real, 3, 1>;
 using Mat3 = Eigen::Matrix<Real, 3, 3>;
 using Vec6 = Eigen::Matrix<Real, 6, 1>;

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "model/contact.hpp"
 #include "nonlinear/solution_controls.hpp"
 
 namespace kontakt::model {
@@ -162,6 +163,8 @@ struct Step {
   VecX temperatures;
   std::vector<PrintRequest> prints;
   std::vector<FileRequest> node_files, element_files;
+  ContactControls contact_controls;  ///< *CONTROLS, PARAMETERS=CONTACT / LINE SEARCH in force
+  std::vector<ContactRequest> contact_prints, contact_files;
 };
 
 struct Model {
@@ -175,6 +178,8 @@ struct Model {
   std::vector<SolidSection> sections;
   std::vector<Amplitude> amplitudes;
   std::vector<Equation> equations;
+  std::vector<SurfaceInteraction> interactions;
+  std::vector<ContactPair> contact_pairs;  ///< all pairs of the deck (model level, as in ccx)
   /// Initial nodal temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE), size n_nodes, or
   /// empty when none were given.
   VecX initial_temperatures;

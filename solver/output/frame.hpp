@@ -7,6 +7,32 @@
 
 namespace kontakt::output {
 
+/// One contact point of the converged state: a surface-to-surface integration point or a
+/// node-to-surface slave node. *CONTACT PRINT rows (CDIS, CSTR, CELS) list the active ones.
+struct ContactPointRecord {
+  int pair = 0;              ///< index into Model::contact_pairs
+  int slave_element = -1;    ///< internal element index of the slave face (-1: nodal slave)
+  int slave_face = 0;        ///< 1-based ccx face number of that element
+  int slave_node = -1;       ///< node-to-surface: internal index of the slave node
+  Vec2 xi = Vec2::Zero();    ///< local coordinates in the slave face
+  Vec3 x = Vec3::Zero();     ///< current position of the point
+  bool active = false;       ///< carries force in the converged state
+  Real clearance = 0;        ///< g = -overclosure: negative when penetrating (ccx's COPEN sign)
+  Real pressure = 0;         ///< positive in compression (TIED may be negative)
+  Vec2 slip = Vec2::Zero();  ///< tangential relative displacement along t1, t2 (CSLIP1/2)
+  Vec2 shear = Vec2::Zero(); ///< shear stress along t1, t2 (CSHEAR1/2)
+  Real area = 0;             ///< slave area the point represents
+  Real energy = 0;           ///< spring energy (CELS)
+};
+
+/// Contact variables at the nodes: extrapolated from the points per slave face (thesis
+/// §4.3.3) and averaged over the faces at a node; zero away from the slave surfaces.
+struct ContactNodal {
+  VecX CPRESS, COPEN;        ///< n_nodes
+  MatX CSHEAR, CSLIP;        ///< n_nodes x 2
+  VecX CSTATUS;              ///< 0 open, 1 stick, 2 slip (as ccx's CSTATUS)
+};
+
 struct Frame {
   int step = 1;             ///< 1-based
   int increment = 1;        ///< 1-based within the step
@@ -30,6 +56,11 @@ struct Frame {
   VecX PEEQ;
   /// Nodal values extrapolated from the points and averaged over the elements at each node.
   MatX6 S_nodal, E_nodal;
+
+  /// Contact state; both empty for models without contact pairs.
+  std::vector<ContactPointRecord> contact_points;
+  ContactNodal contact_nodal;
+  int n_active_contact = 0;  ///< active contact elements (points or nodes)
 };
 
 /// One record per attempted increment, as in ccx's .sta/.cvg and the HDF5 /history group.
