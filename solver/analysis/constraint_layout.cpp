@@ -16,4 +16,12 @@ bool ConstraintLayout::update(const model::Model& model, const model::Step& step
   return true;
 }
 
+bool ConstraintLayout::set_contact_groups(const std::vector<std::vector<int>>& groups,
+                                          linsolve::LinearSolver& solver, int threads) {
+  if (plan_->groups == groups) return false;
+  assembly::set_groups(*plan_, groups, threads);
+  solver.analyze(plan_->pattern);
+  return true;
+}
+
 }  // namespace kontakt::analysis

@@ -17,6 +17,10 @@ class ConstraintLayout {
   /// analysis, and returns true (numeric factorisations must then be redone).
   bool update(const model::Model& model, const model::Step& step, linsolve::LinearSolver& solver,
               int threads);
+  /// Takes this increment's contact groups into the pattern. When they differ from the current
+  /// ones, rebuilds the pattern and reruns the symbolic analysis, and returns true.
+  bool set_contact_groups(const std::vector<std::vector<int>>& groups,
+                          linsolve::LinearSolver& solver, int threads);
   const assembly::DofMap& dofs() const { return *dofs_; }
   const assembly::AssemblyPlan& plan() const { return *plan_; }
 

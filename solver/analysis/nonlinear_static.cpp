@@ -2,14 +2,19 @@
 //   loads and prescribed values ramp from the previous step's end values to the step's own
 //   (amplitudes, where given, drive them instead); IncrementControl proposes increments.
 // For each increment:
-//   the prescribed dofs jump to their new values, the free ones start where the last increment
-//   ended; Newton iterations solve K dx = T^T (f_ext - f_int) until Convergence says so.
+//   contact (when the model has pairs) builds its points and pairings at the converged state
+//   and fixes the contact groups of the sparsity pattern; the prescribed dofs jump to their new
+//   values, the free ones start where the last increment ended; Newton iterations solve
+//   K dx = T^T (f_ext - f_int - f_contact) until Convergence says so (with the contact rules
+//   of the pairs' schemes; line search for the linear surface-to-surface variants).
 //   A cutback restores the last converged state and retries smaller.
-// On convergence the frame is handed to the writers (they decide what is due).
+// On convergence the linear contact variants check that their frozen geometry has not drifted
+// (else the increment is redone smaller), and the frame is handed to the writers.
 #include "analysis/nonlinear_static.hpp"
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "analysis/element_access.hpp"
@@ -17,6 +22,7 @@
 #include "analysis/step_loads.hpp"
 #include "analysis/constraint_layout.hpp"
 #include "assembly/assembler.hpp"
+#include "contact/contact_system.hpp"
 #include "core/parallel.hpp"
 #include "element/solid_plastic.hpp"
 #include "element/total_lagrangian.hpp"
@@ -82,12 +88,20 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   }
 }
 
+/// Contact's part of an evaluation: the system and how many times it was evaluated in the
+/// current increment (its re-pairing rule counts evaluations).
+struct ContactEvaluation {
+  contact::ContactSystem* system = nullptr;
+  int evaluations = 0;
+};
+
 /// Assembles the tangent and residual at `u` (full dof vector) with temperatures `dT`. A
 /// nonzero `prescribed_step` (per prescribed slot) moves the constrained dofs within the
 /// linearised system (-K g on the right-hand side), so the free dofs follow them at once.
 Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& plan, bool nlgeom,
                     const PointStates& committed, const VecX& u, const VecX& dT,
-                    const VecX& f_ext, const VecX& prescribed_step, int threads) {
+                    const VecX& f_ext, const VecX& prescribed_step, ContactEvaluation& contact,
+                    int threads) {
   const auto& elements = model.mesh.elements;
   Evaluation ev;
   std::vector<VecX> f_el(elements.size());
@@ -114,6 +128,27 @@ Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& pla
       for (int c = 0; c < 3; ++c) ev.internal_force[3 * nodes[a] + c] += f_el[e][3 * a + c];
     sum += f_el[e].cwiseAbs().sum();
     count += f_el[e].size();
+  }
+  if (contact.system) {
+    // Contact groups act like elements: scattered with the same dof reduction, part of the
+    // reaction forces and of the average force (ccx counts its contact springs in q_bar).
+    contact::ContactSystem& c = *contact.system;
+    c.evaluate(u, ++contact.evaluations, threads);
+    std::vector<const MatX*> K;
+    std::vector<const VecX*> f;
+    std::vector<VecX> minus_f(plan.groups.size());
+    for (std::size_t g = 0; g < plan.groups.size(); ++g) {
+      const auto& cg = c.contributions()[g];
+      minus_f[g] = -cg.f_int;
+      K.push_back(&cg.K);
+      f.push_back(&minus_f[g]);
+      const auto& nodes = plan.groups[g];
+      for (std::size_t a = 0; a < nodes.size(); ++a)
+        ev.internal_force.segment<3>(3 * nodes[a]) += cg.f_int.segment<3>(3 * a);
+    }
+    assembly::scatter_groups(plan, prescribed_step, K, f, ev.system);
+    sum += c.force_abs_sum();
+    count += c.force_components();
   }
   ev.force_average = count ? sum / static_cast<Real>(count) : 0;
   assembly::add_nodal_forces(*plan.dofs, f_ext, ev.system.rhs);
@@ -177,9 +212,36 @@ nonlinear::StepTiming step_timing(const model::Step& step) {
 
 Real max_abs(const VecX& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0; }
 
+/// A linear contact variant whose frozen gaps differ from fresh projections by more than this
+/// fraction of the largest overclosure redoes the increment at half the size.
+constexpr Real kDriftTolerance = 0.1;
+
+/// The step's controls with ccx's face-to-face changes for the linear surface-to-surface
+/// variants: the iteration cap is itf2f, the next increment is never shrunk for slow
+/// convergence (thesis 4.4.2) and grows after increments of up to I_G + 12 iterations.
+nonlinear::SolutionControls contact_controls(nonlinear::SolutionControls c,
+                                             contact::ContactRules rules,
+                                             const model::ContactControls& cc) {
+  if (rules != contact::ContactRules::SurfaceToSurface) return c;
+  c.max_iterations = cc.itf2f;
+  c.slow_increment_iterations = std::numeric_limits<int>::max();
+  c.fast_increment_iterations += 12;
+  return c;
+}
+
+nonlinear::ContactCriteria criteria_of(contact::ContactRules rules) {
+  switch (rules) {
+    case contact::ContactRules::None: return nonlinear::ContactCriteria::None;
+    case contact::ContactRules::NodeToSurface: return nonlinear::ContactCriteria::NodeToSurface;
+    case contact::ContactRules::SurfaceToSurface: return nonlinear::ContactCriteria::SurfaceToSurface;
+  }
+  return nonlinear::ContactCriteria::None;
+}
+
 }  // namespace
 
 bool needs_newton(const model::Model& model) {
+  if (!model.contact_pairs.empty()) return true;
   for (const auto& step : model.steps)
     if (step.nlgeom) return true;
   for (const auto& el : model.mesh.elements)
@@ -202,7 +264,10 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   VecX cloads_prev = VecX::Zero(n_dofs);   // concentrated loads at the previous step end
   VecX dT_prev = VecX::Zero(model.n_nodes());
   Real total_time_start = 0, last_q_bar = 0, max_mises = 0;
-  int total_iterations = 0;
+  Real max_contact_pressure = 0, total_contact_force = 0;
+  int total_iterations = 0, drift_redos = 0;
+  contact::ContactSystem contact(model, options.scheme);
+  const contact::ContactRules contact_rules = contact.rules();
   ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
   linsolve::SpdSolve spd(*solver);
@@ -243,9 +308,13 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       return f;
     };
 
-    const nonlinear::SolutionControls& controls = options.controls ? *options.controls : step.controls;
+    const nonlinear::SolutionControls controls = contact_controls(
+        options.controls ? *options.controls : step.controls, contact_rules, step.contact_controls);
     nonlinear::Convergence convergence(controls, last_q_bar);
+    convergence.set_contact_criteria(criteria_of(contact_rules), step.contact_controls.delcon);
     nonlinear::IncrementControl increments(step_timing(step), controls);
+    // Line search (ccx: face-to-face contact only, from iteration 2, with contact active).
+    const bool line_search = contact_rules == contact::ContactRules::SurfaceToSurface;
     VecX x = VecX::Zero(dofs.n_equations());
     for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];
 
@@ -256,7 +325,6 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                                        u_step_start, u_step_start);
 
       const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
-      convergence.begin_increment();
       // Iteration 1 starts from the converged state and moves the prescribed dofs to their new
       // values through the linearised system; later iterations correct the free dofs only.
       const Real t_old = increments.step_time();
@@ -265,7 +333,16 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       VecX x_trial = x;
       VecX u_trial = dofs.expand(x_trial, g_old);
       const VecX no_step = VecX::Zero(dofs.n_prescribed());
+      ContactEvaluation contact_eval{contact.empty() ? nullptr : &contact, 0};
+      if (!contact.empty()) {
+        contact.begin_increment(u_trial,
+                                {.step = step_no, .increment = increments.increment_number(),
+                                 .fraction_start = t_old / period, .fraction_end = ramp},
+                                threads);
+        layout.set_contact_groups(contact.groups(), *solver, threads);
+      }
       Evaluation ev;
+      bool first_evaluated = false;
       for (int it = 1;; ++it) {
         if (options.cancel && options.cancel->load())
           throw Cancelled("cancelled in step " + std::to_string(step_no) + ", increment " +
@@ -273,19 +350,39 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         linsolve::SpdSolveReport report;
         nonlinear::Verdict verdict;
         try {
-          if (it == 1)
+          if (it == 1) {
             ev = evaluate(model, plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
-                          g - g_old, threads);
+                          g - g_old, contact_eval, threads);
+            convergence.begin_increment(contact.empty() ? -1 : contact.n_active());
+            first_evaluated = true;
+          }
           spd.factorise(plan.pattern, ev.system.values, report);
-          x_trial += spd.solve(plan.pattern, ev.system.values, ev.system.rhs, report);
-          const VecX u_new = dofs.expand(x_trial, g);
+          const VecX dx = spd.solve(plan.pattern, ev.system.values, ev.system.rhs, report);
+          const VecX x_old = x_trial, rhs_old = ev.system.rhs;
+          x_trial = x_old + dx;
+          VecX u_new = dofs.expand(x_trial, g);
+          ev = evaluate(model, plan, step.nlgeom, committed, u_new, dT, loads_at(t, u_new),
+                        no_step, contact_eval, threads);
+          if (line_search && it > 1 && contact.n_active() > 0) {
+            // The root of the residual's projection on dx, from its values at both ends.
+            const Real r0 = dx.dot(rhs_old), r1 = dx.dot(ev.system.rhs);
+            Real eta = r0 - r1 != 0 ? r0 / (r0 - r1) : 1;
+            eta = std::clamp(eta, step.contact_controls.line_search_min,
+                             step.contact_controls.line_search_max);
+            if (std::abs(eta - 1) > 1e-3) {
+              x_trial = x_old + eta * dx;
+              u_new = dofs.expand(x_trial, g);
+              ev = evaluate(model, plan, step.nlgeom, committed, u_new, dT, loads_at(t, u_new),
+                            no_step, contact_eval, threads);
+            }
+          }
           const Real c_max = max_abs(u_new - u_trial);
           u_trial = u_new;
-          ev = evaluate(model, plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
-                        no_step, threads);
           verdict = convergence.check(
-              it, {ev.force_average, max_abs(ev.system.rhs), c_max, false});
+              it, {ev.force_average, max_abs(ev.system.rhs), c_max,
+                   contact.empty() ? -1 : contact.n_active()});
         } catch (const SolverError& e) {  // singular tangent, inverted element: cut back
+          if (!first_evaluated) convergence.begin_increment();
           verdict.kind = nonlinear::Verdict::Kind::Cutback;
           verdict.cutback_factor = controls.divergence_cutback;
           verdict.reason = e.what();
@@ -297,7 +394,24 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                          .step_time = t, .total_time = total_time_start + t,
                          .dt = increments.increment(),
                          .residual = 100 * verdict.residual_ratio,
-                         .correction = 100 * verdict.correction_ratio, .wall_time = wall()});
+                         .correction = 100 * verdict.correction_ratio,
+                         .contact_elements = contact.empty() ? -1 : contact.n_active(),
+                         .wall_time = wall()});
+        if (verdict.kind == nonlinear::Verdict::Kind::Converged && !contact.empty() &&
+            contact_rules == contact::ContactRules::SurfaceToSurface) {
+          // Beyond the thesis (section 7.1): frozen projections that no longer lie under their
+          // points give wrong gaps; redo the increment smaller while the limits allow it.
+          const Real drift = contact.frozen_drift(u_trial);
+          const Real half = 0.5 * increments.increment();
+          if (drift > kDriftTolerance && !step.procedure.direct &&
+              half >= increments.min_increment() && increments.attempt() <= controls.max_cutbacks) {
+            ++drift_redos;
+            verdict.kind = nonlinear::Verdict::Kind::Cutback;
+            verdict.cutback_factor = 0.5;
+            verdict.reason = "frozen contact geometry drifted: gaps off by " +
+                             std::to_string(drift) + " of the largest overclosure";
+          }
+        }
         if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
           convergence.commit_increment();
           x = x_trial;
@@ -314,6 +428,12 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           frame.step_time = t;
           frame.total_time = total_time_start + t;
           frame.is_step_end = increments.finished();
+          if (!contact.empty()) {
+            frame.contact_points = contact.records(u);
+            frame.n_active_contact = contact.n_active();
+            max_contact_pressure = contact.max_pressure();
+            total_contact_force = contact.total_normal_force();
+          }
           for (Index k = 0; k < frame.S.rows(); ++k) {
             const auto sr = frame.S.row(k);
             const Real a = sr[0] - sr[1], b = sr[1] - sr[2], c = sr[2] - sr[0];
@@ -323,6 +443,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           events.on_event({.kind = Event::Kind::Increment, .step = step_no,
                            .increment = increment_no, .attempt = attempt, .iteration = it,
                            .step_time = t, .total_time = total_time_start + t, .dt = dt,
+                           .contact_elements = contact.empty() ? -1 : contact.n_active(),
                            .wall_time = wall()});
           frames.on_frame(step, frame);
           break;
@@ -350,6 +471,10 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   for (int n = 0; n < model.n_nodes(); ++n)
     done.max_displacement = std::max(done.max_displacement, u.segment<3>(3 * n).norm());
   done.max_mises = max_mises;
+  done.has_contact = !contact.empty();
+  done.max_contact_pressure = max_contact_pressure;
+  done.total_contact_force = total_contact_force;
+  done.drift_redos = drift_redos;
   events.on_event(done);
 }
 

@@ -1,6 +1,7 @@
 // Nonlinear static analysis: steps -> increments -> Newton iterations, with ccx's convergence
 // criteria and automatic incrementation (nonlinear/convergence.hpp, increment_control.hpp).
-// Used for steps with NLGEOM; the linear driver keeps models that need no iteration.
+// Used for steps with NLGEOM, plasticity or contact; the linear driver keeps models that need
+// no iteration.
 #pragma once
 
 #include <atomic>
@@ -8,6 +9,7 @@
 
 #include "analysis/events.hpp"
 #include "analysis/linear_static.hpp"
+#include "model/contact.hpp"
 #include "nonlinear/solution_controls.hpp"
 
 namespace kontakt::analysis {
@@ -17,6 +19,8 @@ struct NonlinearOptions {
   const std::atomic<bool>* cancel = nullptr;      ///< polled once per iteration
   /// Overrides every step's *CONTROLS when set (tests, expert use).
   std::optional<nonlinear::SolutionControls> controls;
+  /// Overrides the scheme of every contact pair (the CLI's --scheme, the API's scheme).
+  std::optional<model::ContactScheme> scheme;
 };
 
 /// The run was cancelled through NonlinearOptions::cancel; converged frames are kept.
@@ -30,7 +34,7 @@ class Cancelled : public std::runtime_error {
 void run_nonlinear_static(const model::Model& model, const NonlinearOptions& options,
                           FrameSink& frames, EventSink& events);
 
-/// True when some step of the model needs Newton iterations (NLGEOM).
+/// True when some step of the model needs Newton iterations (NLGEOM, *PLASTIC, contact).
 bool needs_newton(const model::Model& model);
 
 }  // namespace kontakt::analysis

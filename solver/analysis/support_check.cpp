@@ -31,6 +31,16 @@ void check_bodies_supported(const model::Model& model, const assembly::DofMap& d
     }
   for (const auto& eq : model.equations)
     for (const auto& term : eq.terms) bodies.join(eq.terms.front().node, term.node);
+  // Contact can hold a body against another: the two sides of a pair count as one body.
+  for (const auto& pair : model.contact_pairs) {
+    std::vector<int> nodes;
+    for (const auto* name : {&pair.slave, &pair.master}) {
+      const auto& surface = model.surfaces.at(*name);
+      for (int n : surface.nodes) nodes.push_back(n);
+      for (const auto& f : surface.faces) nodes.push_back(model.mesh.elements[f.element].nodes.front());
+    }
+    for (int n : nodes) bodies.join(nodes.front(), n);
+  }
 
   // A body is held in a direction when some dof in it is prescribed in that direction.
   std::vector<std::array<char, 3>> held(n_nodes, {0, 0, 0});

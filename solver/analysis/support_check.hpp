@@ -7,7 +7,7 @@
 namespace kontakt::analysis {
 
 /// Throws SolverError naming a node of the first connected body (elements joined by shared
-/// nodes or *EQUATION terms) that has no prescribed dof in x, y or z: such a body can translate
+/// nodes, *EQUATION terms or a contact pair) that has no prescribed dof in x, y or z: such a body can translate
 /// freely, and its stiffness matrix is singular.
 void check_bodies_supported(const model::Model& model, const assembly::DofMap& dofs);
 

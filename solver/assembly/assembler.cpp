@@ -10,20 +10,29 @@ AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symme
                        int threads) {
   AssemblyPlan plan;
   plan.dofs = &dofs;
-  const ElementEquations eqs = element_equations(model, dofs);
-  plan.pattern = build_pattern(eqs, dofs.n_equations(), symmetric, threads);
-  plan.colours = colour_elements(eqs, dofs.n_equations());
+  plan.element_eqs = element_equations(model, dofs);
+  plan.pattern = build_pattern(plan.element_eqs, dofs.n_equations(), symmetric, threads);
+  plan.colours = colour_elements(plan.element_eqs, dofs.n_equations());
   return plan;
+}
+
+void set_groups(AssemblyPlan& plan, std::vector<std::vector<int>> groups, int threads) {
+  plan.groups = std::move(groups);
+  const ElementEquations all =
+      plan.groups.empty() ? plan.element_eqs
+                          : concatenate(plan.element_eqs, group_equations(plan.groups, *plan.dofs));
+  plan.pattern = build_pattern(all, plan.dofs->n_equations(), plan.pattern.upper, threads);
 }
 
 namespace {
 
-/// Adds one element's K and f into the reduced system through the dof expressions.
-void scatter_element(const model::Element& element, const DofMap& dofs,
+/// Adds one element's (or node group's) K and f into the reduced system through the dof
+/// expressions.
+void scatter_element(const std::vector<int>& nodes, const DofMap& dofs,
                      const SparsePattern& pattern, const VecX& prescribed, const MatX& K,
                      const VecX& f, ReducedSystem& out) {
-  const int n_local = 3 * static_cast<int>(element.nodes.size());
-  auto dof_of = [&](int a) { return 3 * element.nodes[a / 3] + a % 3; };
+  const int n_local = 3 * static_cast<int>(nodes.size());
+  auto dof_of = [&](int a) { return 3 * nodes[a / 3] + a % 3; };
   for (int a = 0; a < n_local; ++a) {
     const int da = dof_of(a);
     for (auto ta = dofs.terms_begin(da); ta != dofs.terms_end(da); ++ta) {
@@ -65,10 +74,17 @@ void assemble(const model::Model& model, const AssemblyPlan& plan,
       for (std::size_t k = begin; k < end; ++k) {
         const int e = colour[k];
         kernel(e, K, f);
-        scatter_element(elements[e], dofs, plan.pattern, prescribed_values, K, f, out);
+        scatter_element(elements[e].nodes, dofs, plan.pattern, prescribed_values, K, f, out);
       }
     });
   }
+}
+
+void scatter_groups(const AssemblyPlan& plan, const VecX& prescribed_values,
+                    const std::vector<const MatX*>& K, const std::vector<const VecX*>& f,
+                    ReducedSystem& out) {
+  for (std::size_t g = 0; g < plan.groups.size(); ++g)
+    scatter_element(plan.groups[g], *plan.dofs, plan.pattern, prescribed_values, *K[g], *f[g], out);
 }
 
 void add_nodal_forces(const DofMap& dofs, const VecX& f, VecX& rhs) {

@@ -25,15 +25,27 @@ struct AssemblyPlan {
   const DofMap* dofs = nullptr;
   SparsePattern pattern;
   std::vector<std::vector<int>> colours;  ///< elements sharing no equation
+  ElementEquations element_eqs;           ///< kept to extend the pattern by node groups
+  /// Node groups beyond the elements (contact: slave nodes with one master face) that the
+  /// pattern includes; scattered by scatter_groups().
+  std::vector<std::vector<int>> groups;
 };
 AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symmetric,
                        int threads);
+/// Replaces the plan's node groups and rebuilds its pattern (elements + groups).
+void set_groups(AssemblyPlan& plan, std::vector<std::vector<int>> groups, int threads);
 
 /// Assembles stiffness and loads of every element; prescribed values enter the right-hand
 /// side as -K g. `out` is overwritten.
 void assemble(const model::Model& model, const AssemblyPlan& plan,
               const VecX& prescribed_values, const ElementKernel& kernel, int threads,
               ReducedSystem& out);
+
+/// Adds the stiffness K[g] and load f[g] of every node group g of the plan (dof order: the
+/// group's nodes, x, y, z each) into `out`, after assemble().
+void scatter_groups(const AssemblyPlan& plan, const VecX& prescribed_values,
+                    const std::vector<const MatX*>& K, const std::vector<const VecX*>& f,
+                    ReducedSystem& out);
 
 /// rhs += T^T f for a nodal force vector f over all 3 * n_nodes dofs.
 void add_nodal_forces(const DofMap& dofs, const VecX& f, VecX& rhs);

@@ -8,14 +8,17 @@
 
 namespace kontakt::assembly {
 
-ElementEquations element_equations(const model::Model& model, const DofMap& dofs) {
+namespace {
+
+/// Free equations of the dofs of each node list `nodes_of(i)`, i < n, sorted and unique.
+template <class NodesOf>
+ElementEquations equations_of(std::size_t n, NodesOf&& nodes_of, const DofMap& dofs) {
   ElementEquations out;
-  const auto& elements = model.mesh.elements;
-  out.start.assign(elements.size() + 1, 0);
+  out.start.assign(n + 1, 0);
   std::vector<int> scratch;
-  for (std::size_t e = 0; e < elements.size(); ++e) {
+  for (std::size_t e = 0; e < n; ++e) {
     scratch.clear();
-    for (int node : elements[e].nodes)
+    for (int node : nodes_of(e))
       for (int c = 0; c < 3; ++c)
         for (auto t = dofs.terms_begin(3 * node + c); t != dofs.terms_end(3 * node + c); ++t)
           if (!t->is_prescribed) scratch.push_back(t->index);
@@ -24,6 +27,29 @@ ElementEquations element_equations(const model::Model& model, const DofMap& dofs
     out.eqs.insert(out.eqs.end(), scratch.begin(), scratch.end());
     out.start[e + 1] = static_cast<Index>(out.eqs.size());
   }
+  return out;
+}
+
+}  // namespace
+
+ElementEquations element_equations(const model::Model& model, const DofMap& dofs) {
+  const auto& elements = model.mesh.elements;
+  return equations_of(elements.size(), [&](std::size_t e) -> const std::vector<int>& {
+    return elements[e].nodes;
+  }, dofs);
+}
+
+ElementEquations group_equations(const std::vector<std::vector<int>>& groups, const DofMap& dofs) {
+  return equations_of(groups.size(), [&](std::size_t g) -> const std::vector<int>& {
+    return groups[g];
+  }, dofs);
+}
+
+ElementEquations concatenate(const ElementEquations& a, const ElementEquations& b) {
+  ElementEquations out = a;
+  out.eqs.insert(out.eqs.end(), b.eqs.begin(), b.eqs.end());
+  const Index shift = a.start.back();
+  for (std::size_t k = 1; k < b.start.size(); ++k) out.start.push_back(b.start[k] + shift);
   return out;
 }
 

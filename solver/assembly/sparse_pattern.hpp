@@ -16,6 +16,10 @@ struct ElementEquations {
   std::vector<int> eqs;
 };
 ElementEquations element_equations(const model::Model& model, const DofMap& dofs);
+/// The same for arbitrary node groups (contact groups: slave nodes with a master face).
+ElementEquations group_equations(const std::vector<std::vector<int>>& groups, const DofMap& dofs);
+/// `a` followed by `b`: the lists of both, as for one combined set of elements.
+ElementEquations concatenate(const ElementEquations& a, const ElementEquations& b);
 
 /// Compressed sparse column pattern. When `upper` is set only rows <= column are stored
 /// (the symmetric storage CHOLMOD takes); otherwise the full pattern (UMFPACK).

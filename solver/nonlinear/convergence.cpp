@@ -24,11 +24,50 @@ Convergence::Convergence(const SolutionControls& controls, Real previous_force_a
   else
     q_tilde_ = 0.01;
   last_q_bar_ = previous_force_average;
+  begin_increment();
 }
 
-void Convergence::begin_increment() {
+void Convergence::set_contact_criteria(ContactCriteria criteria, Real delcon) {
+  contact_ = criteria;
+  delcon_ = delcon;
+}
+
+void Convergence::begin_increment(int contact_elements) {
   q_tilde_trial_ = q_tilde_;
   trial_averaged_ = false;
+  divergence_from_ = c_.divergence_check_from;
+  estimate_from_ = c_.log_estimate_from;
+  max_iterations_ = c_.max_iterations;
+  residuals_.clear();
+  counts_.assign(1, contact_elements);
+  changed_.clear();
+}
+
+bool Convergence::contact_changed(int before, int after) const {
+  if (contact_ == ContactCriteria::None || before < 0 || after < 0) return false;
+  if (contact_ == ContactCriteria::NodeToSurface) return before != after;
+  return std::abs(after - before) > delcon_ * std::max(before, 1);
+}
+
+bool Convergence::surface_divergence(int iteration, Real r, Real c1q) const {
+  const std::size_t i = residuals_.size() - 1;  // index of the current iteration
+  if (iteration < divergence_from_ || r <= c1q || i < 2) return false;
+  // I: the last two residuals both exceed the smallest mean of two consecutive residuals.
+  Real min_mean = 1e300;
+  for (std::size_t k = 1; k < i; ++k) min_mean = std::min(min_mean, 0.5 * (residuals_[k] + residuals_[k - 1]));
+  if (!(residuals_[i] > min_mean && residuals_[i - 1] > min_mean)) return false;
+  // II: the contact set has settled (no change in this and the previous iteration).
+  if (!changed_[i] && !changed_[i - 1]) return true;
+  // III: residuals and contact counts repeat with some period P.
+  for (std::size_t P = 2; P <= 6 && 2 * P <= i + 1; ++P) {
+    bool repeats = true;
+    for (std::size_t j = i + 1 - P; j <= i && repeats; ++j) {
+      const Real a = residuals_[j], b = residuals_[j - P];
+      repeats = counts_[j + 1] == counts_[j + 1 - P] && std::abs(a - b) <= 0.02 * std::max(a, b);
+    }
+    if (repeats) return true;
+  }
+  return false;
 }
 
 Real Convergence::current_q_tilde(Real q_bar) const {
@@ -62,32 +101,56 @@ Verdict Convergence::check(int iteration, const IterationMeasures& m) {
 
   const bool small_correction = dc <= c2 * du_max_ || (r2 > 0 && r * dc / r2 < c2 * du_max_) ||
                                 r <= c_.linear_residual_ratio * q || zero_flux || dc < 1e-8;
-  if (finite && iteration > 1 && r <= c1 * q && !m.active_set_changed && small_correction) {
+  residuals_.push_back(r);
+  counts_.push_back(m.contact_elements);
+  const bool changed = contact_changed(counts_[counts_.size() - 2], m.contact_elements);
+  changed_.push_back(changed);
+  if (changed && contact_ == ContactCriteria::NodeToSurface) {
+    divergence_from_ = std::max(divergence_from_, iteration + 4);
+    estimate_from_ = std::max(estimate_from_, iteration + 8);
+    ++max_iterations_;
+  }
+  const bool surface = contact_ == ContactCriteria::SurfaceToSurface;
+  const bool diverging =
+      !finite || r > kBlowUp ||
+      (surface ? surface_divergence(iteration, r, c1 * q)
+               : iteration >= divergence_from_ && r1_ > r2 && r > r2 && r > c1 * q);
+  if (finite && iteration > 1 && r <= c1 * q && !changed && small_correction) {
     v.kind = Verdict::Kind::Converged;
-  } else if (!finite || r > kBlowUp ||
-             (iteration >= c_.divergence_check_from && r1_ > r2 && r > r2 && r > c1 * q)) {
+  } else if (diverging) {
     v.kind = Verdict::Kind::Cutback;
     v.cutback_factor = c_.divergence_cutback;
     std::ostringstream why;
     if (!finite)
       why << "divergence: non-finite residual or correction in iteration " << iteration;
+    else if (surface)
+      why << "divergence in iteration " << iteration << ": largest residual " << r
+          << " keeps above its best two-iteration mean with "
+          << (changed ? "a repeating contact pattern" : "the contact set settled");
     else
       why << "divergence in iteration " << iteration << ": largest residual " << r
           << " grew over two iterations (" << r2 << ", " << r1_ << ")";
     v.reason = why.str();
-  } else if (iteration >= c_.log_estimate_from) {
+  } else if (surface) {
+    if (iteration >= max_iterations_) {
+      v.kind = Verdict::Kind::Cutback;
+      v.cutback_factor = c_.slow_cutback;
+      v.reason = "no convergence within " + std::to_string(max_iterations_) +
+                 " iterations (*CONTROLS, PARAMETERS=CONTACT itf2f)";
+    }
+  } else if (iteration >= estimate_from_) {
     // ccx's estimate of the iterations still needed at the current rate of convergence.
     const Real rate = r1_ > 0 ? r / r1_ : 1;
     const Real needed = rate < 1 && r > 0 ? std::ceil(iteration + std::log(c_.residual_tolerance * q / r) /
                                                                        std::log(rate))
                                           : iteration;
-    if (iteration >= c_.max_iterations || needed > c_.max_iterations) {
+    if (iteration >= max_iterations_ || needed > max_iterations_) {
       v.kind = Verdict::Kind::Cutback;
       v.cutback_factor = c_.slow_cutback;
       std::ostringstream why;
       why << "slow convergence in iteration " << iteration << ": residual ratio "
           << v.residual_ratio << ", about " << needed << " iterations needed, limit "
-          << c_.max_iterations;
+          << max_iterations_;
       v.reason = why.str();
     }
   }

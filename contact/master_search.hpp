@@ -1,0 +1,27 @@
+// Narrow phase of the contact search: the master face a slave point belongs to, among the
+// candidates the broad phase found. A point pairs with the face whose (extended) surface it
+// projects into, preferring the nearest such face; points that project outside every candidate
+// face lie beyond the master surface and get no contact.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "contact/closest_point.hpp"
+
+namespace kontakt::contact {
+
+struct MasterFoot {
+  int candidate = -1;       ///< index into the candidate list; -1 when outside the master surface
+  ClosestPoint foot;
+};
+
+/// Natural-coordinate tolerance of the "inside the face" test. The first pass is tight; the
+/// second widens it so a point at a convex edge of the master surface (whose projections fall
+/// just outside both faces) still finds the nearer face.
+inline constexpr Real kInsideTolerance = 1e-3;
+inline constexpr Real kEdgeTolerance = 0.05;
+
+MasterFoot find_master(const Vec3& p, std::span<const FaceGeometry* const> candidates);
+
+}  // namespace kontakt::contact
