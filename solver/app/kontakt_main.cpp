@@ -1,6 +1,6 @@
 // kontakt: the command-line front end.
 //
-//   kontakt solve MODEL.inp [-o DIR] [--threads N] [--quiet]
+//   kontakt solve MODEL.inp [-o DIR] [--scheme NAME] [--threads N] [--quiet]
 //
 // reads the deck, runs the analysis its plan calls for, and writes DIR/MODEL.dat (ccx layout),
 // DIR/MODEL.hdf + DIR/MODEL.xdmf (ParaView), DIR/MODEL.log.jsonl (events) and
@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,10 +38,13 @@ extern "C" void request_cancel(int) { g_cancel.store(true); }
 
 void print_usage(std::FILE* out) {
   std::fputs(
-      "usage: kontakt solve MODEL.inp [-o DIR] [--threads N] [--quiet]\n"
+      "usage: kontakt solve MODEL.inp [-o DIR] [--scheme NAME] [--threads N] [--quiet]\n"
       "       kontakt --version\n"
       "\n"
       "  -o DIR       write results to DIR (default: the deck's folder)\n"
+      "  --scheme S   contact discretisation of every pair: nts, gauss, lgauss, gc1, gc3, gc7,\n"
+      "               gc12, lgc1, lgc3, lgc7, lgc12 (default: the deck's SCHEME= or lgc7 for\n"
+      "               SURFACE TO SURFACE, nts for NODE TO SURFACE)\n"
       "  --threads N  threads for assembly, recovery and the factorisation (default: all cores)\n"
       "  --quiet      no progress output\n"
       "\n"
@@ -54,6 +58,7 @@ struct SolveArgs {
   fs::path out_dir;
   int threads = 0;
   bool quiet = false;
+  std::optional<model::ContactScheme> scheme;
 };
 
 /// Parses `solve` arguments; returns false (after printing why) on a usage error.
@@ -81,6 +86,15 @@ bool parse_solve_args(int argc, char** argv, SolveArgs& args) {
         return false;
       }
       args.threads = static_cast<int>(n);
+    } else if (a == "--scheme") {
+      const char* v = value("--scheme");
+      if (!v) return false;
+      args.scheme = model::contact_scheme_from_name(v);
+      if (!args.scheme) {
+        std::fprintf(stderr, "kontakt: unknown contact scheme '%s' (nts, gauss, lgauss, gc1, gc3, "
+                             "gc7, gc12, lgc1, lgc3, lgc7, lgc12)\n", v);
+        return false;
+      }
     } else if (a == "--quiet" || a == "-q") {
       args.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -136,6 +150,7 @@ int run_solve(const SolveArgs& args) {
         analysis::NonlinearOptions options;
         options.threads = args.threads;
         options.cancel = &g_cancel;
+        options.scheme = args.scheme;
         analysis::run_nonlinear_static(model, options, writers, events);
       } else {
         analysis::run_linear_static(model, {.threads = args.threads}, writers, events);

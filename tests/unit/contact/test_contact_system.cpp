@@ -4,7 +4,9 @@
 
 #include <map>
 #include <random>
+#include <tuple>
 
+#include "contact/adjust_nodes.hpp"
 #include "contact/contact_system.hpp"
 #include "contact/contact_surface.hpp"
 #include "two_blocks.hpp"
@@ -149,4 +151,28 @@ TEST(ContactSystem, InitialOverlapIsRampedOutOverStepOne) {
   sys.begin_increment(u, {.step = 2}, 1);
   sys.evaluate(u, 1, 1);
   for (const auto& r : sys.records(u)) EXPECT_NEAR(r.clearance, -1e-3, 1e-12);
+}
+
+TEST(AdjustSlaveNodes, MovesNodesWithinTheDistanceOntoTheMaster) {
+  for (const auto& [gap, distance, moves] : {std::tuple{1e-3, 1e-2, true}, {1e-3, 1e-4, false},
+                                             {-1e-3, 0.0, true}}) {
+    fixtures::TwoBlocks t;
+    t.upper = {"C3D20", 2, 1};
+    t.gap = gap;
+    model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
+    m.contact_pairs[0].adjust_distance = distance;
+    const ContactSurface slave = make_contact_surface(m, m.surfaces.at("SLAVE"));
+    EXPECT_EQ(adjust_slave_nodes(m), moves ? static_cast<int>(slave.nodes.size()) : 0);
+    for (int n : slave.nodes) EXPECT_NEAR(m.mesh.coords(n, 2), moves ? 1.0 : 1 + gap, 1e-12);
+  }
+  // ADJUST=nset moves exactly the set's nodes, whatever their distance.
+  fixtures::TwoBlocks t;
+  t.gap = 0.05;
+  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
+  const ContactSurface slave = make_contact_surface(m, m.surfaces.at("SLAVE"));
+  m.node_sets["ADJ"] = {"ADJ", {slave.nodes[0], slave.nodes[1]}};
+  m.contact_pairs[0].adjust_set = "ADJ";
+  EXPECT_EQ(adjust_slave_nodes(m), 2);
+  EXPECT_NEAR(m.mesh.coords(slave.nodes[0], 2), 1.0, 1e-12);
+  EXPECT_NEAR(m.mesh.coords(slave.nodes[2], 2), 1.05, 1e-12);
 }
