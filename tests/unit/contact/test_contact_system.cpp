@@ -176,3 +176,30 @@ TEST(AdjustSlaveNodes, MovesNodesWithinTheDistanceOntoTheMaster) {
   EXPECT_NEAR(m.mesh.coords(slave.nodes[0], 2), 1.0, 1e-12);
   EXPECT_NEAR(m.mesh.coords(slave.nodes[2], 2), 1.05, 1e-12);
 }
+
+TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
+  // Lower block's top bent into a bowl z = 1 - 0.3 (x - 0.5)^2; a small flat block pressed on
+  // its bottom. Without sliding the frozen gaps are exact; after sliding 0.2 along x the
+  // frozen projections are far from the surface under the points.
+  fixtures::TwoBlocks t;
+  t.lower = {"C3D20", 6, 1};
+  t.upper = {"C3D8", 2, 1};
+  t.upper_size = 0.2;
+  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
+      m.mesh.coords(n, 2) -= 0.3 * std::pow(m.mesh.coords(n, 0) - 0.5, 2);
+  ContactSystem sys(m, std::nullopt);
+  VecX u = VecX::Zero(3 * m.n_nodes());
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+  sys.begin_increment(u, {.step = 2}, 1);
+  sys.evaluate(u, 1, 1);
+  ASSERT_GT(sys.n_active(), 0);
+  EXPECT_LT(sys.frozen_drift(u), 1e-9);
+  VecX slid = u;
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) slid(3 * n) = 0.2;
+  sys.evaluate(slid, 2, 1);
+  EXPECT_GT(sys.frozen_drift(slid), 1.0);
+}
