@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "inp/inp_lexer.hpp"
@@ -44,6 +45,24 @@ struct RawSection {
   SourceLoc where;
 };
 
+/// Where the cards of a *SURFACE INTERACTION block were, for the end-of-deck resolution
+/// (defaults from the first material, which may come later in the deck; missing cards).
+struct RawInteraction {
+  bool has_behavior = false;
+  SourceLoc behavior_where;      ///< the *SURFACE BEHAVIOR card
+  SourceLoc friction_where;      ///< the *FRICTION card
+};
+
+/// A *CONTACT PAIR data line before the names are resolved.
+struct RawContactPair {
+  model::ContactPair pair;       ///< everything but the interaction index
+  std::string interaction;       ///< INTERACTION= name
+};
+
+/// One entry of ccx's single print list: *NODE PRINT and *EL PRINT requests, or a
+/// *CONTACT PRINT request.
+using PrintEntry = std::variant<model::PrintRequest, model::ContactRequest>;
+
 using DofKey = std::pair<int, int>;  ///< (internal node, dof 0..2)
 using FaceKey = std::pair<int, int>; ///< (internal element, 1-based face)
 
@@ -53,11 +72,17 @@ struct ActiveLoads {
   std::map<DofKey, model::ConcentratedLoad> cloads;
   std::map<FaceKey, model::PressureLoad> pressures;
   std::map<int, Real> temperatures;  ///< internal node -> temperature
-  std::vector<model::PrintRequest> node_prints, element_prints;
+  /// In ccx's order: the first card of a kind in a step removes the earlier entries of that
+  /// kind, new requests are appended (so the .dat blocks follow this list).
+  std::vector<PrintEntry> prints;
   std::vector<model::FileRequest> node_files, element_files;
+  std::vector<model::ContactRequest> contact_files;
   int output_frequency = 1;  ///< ccx: the last FREQUENCY= given applies to all outputs
   bool nlgeom = false;       ///< ccx: NLGEOM stays active in later steps
   nonlinear::SolutionControls controls;  ///< *CONTROLS stay in force until RESET
+  model::ContactControls contact_controls;  ///< likewise
+  /// *CHANGE FRICTION: interaction index -> the friction that replaces the model's one.
+  std::map<int, model::Friction> friction_changes;
 };
 
 /// Which keywords already appeared in the open step: OP= acts on the first card only, and the
@@ -81,8 +106,17 @@ struct DeckState {
   std::vector<RawSection> sections;
   std::map<std::string, int> material_index;
   std::map<std::string, int> amplitude_index;
+  std::map<std::string, int> interaction_index;
+  std::vector<RawInteraction> raw_interactions;  ///< parallel to model.interactions
+  std::vector<RawContactPair> contact_pairs;
+  /// Per finished step: ActiveLoads::friction_changes at its end (combined with the model's
+  /// frictions once those are resolved, into Step::interaction_friction).
+  std::vector<std::map<int, model::Friction>> step_friction_changes;
   std::map<int, Real> initial_temperatures;  ///< internal node -> value
   int current_material = -1;                 ///< target of *ELASTIC, *DENSITY, ...
+  /// Target of *SURFACE BEHAVIOR and *FRICTION: the open *SURFACE INTERACTION block or, in a
+  /// step, the interaction named by *CHANGE FRICTION.
+  int current_interaction = -1;
   std::optional<StepProgress> open_step;
   bool any_step_seen = false;
   ActiveLoads active;

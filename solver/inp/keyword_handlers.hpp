@@ -1,5 +1,5 @@
-// Handlers, one per keyword; grouped by file: kw_mesh, kw_material, kw_step, kw_loads,
-// kw_output. Each throws InputError for malformed input.
+// Handlers, one per keyword; grouped by file: kw_mesh, kw_material, kw_contact, kw_step,
+// kw_controls, kw_loads, kw_output. Each throws InputError for malformed input.
 #pragma once
 
 #include "inp/deck_state.hpp"
@@ -22,14 +22,23 @@ void handle_density(const Record&, DeckState&);
 void handle_expansion(const Record&, DeckState&);
 void handle_solid_section(const Record&, DeckState&);
 
+// kw_contact.cpp
+void handle_surface_interaction(const Record&, DeckState&);
+void handle_surface_behavior(const Record&, DeckState&);
+void handle_friction(const Record&, DeckState&);
+void handle_change_friction(const Record&, DeckState&);
+void handle_contact_pair(const Record&, DeckState&);
+
 // kw_step.cpp
 void handle_step(const Record&, DeckState&);
 void handle_static(const Record&, DeckState&);
-void handle_controls(const Record&, DeckState&);
 void handle_end_step(const Record&, DeckState&);
 void handle_amplitude(const Record&, DeckState&);
 void handle_equation(const Record&, DeckState&);
 void handle_initial_conditions(const Record&, DeckState&);
+
+// kw_controls.cpp
+void handle_controls(const Record&, DeckState&);
 
 // kw_loads.cpp
 void handle_boundary(const Record&, DeckState&);
@@ -43,6 +52,8 @@ void handle_el_print(const Record&, DeckState&);
 void handle_node_file(const Record&, DeckState&);
 void handle_el_file(const Record&, DeckState&);
 void handle_output(const Record&, DeckState&);
+void handle_contact_print(const Record&, DeckState&);
+void handle_contact_file(const Record&, DeckState&);
 void handle_ignored_output(const Record&, DeckState&);
 
 }  // namespace kontakt::inp

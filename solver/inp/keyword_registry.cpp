@@ -12,42 +12,51 @@ namespace {
 constexpr auto M = Placement::Model;
 constexpr auto S = Placement::Step;
 constexpr auto A = Placement::Anywhere;
-constexpr auto Ends = MaterialContext::Ends;
-constexpr auto Cont = MaterialContext::Continues;
+constexpr auto None = Block::None;
+constexpr auto Mat = Block::Material;
+constexpr auto Inter = Block::Interaction;
 
-constexpr std::array<KeywordSpec, 31> kKeywords{{
-    {"HEADING", M, Ends, handle_heading},
-    {"NODE", M, Ends, handle_node},
-    {"ELEMENT", M, Ends, handle_element},
-    {"NSET", M, Ends, handle_nset},
-    {"ELSET", M, Ends, handle_elset},
-    {"SURFACE", M, Ends, handle_surface},
-    {"MATERIAL", M, Cont, handle_material},
-    {"ELASTIC", M, Cont, handle_elastic},
-    {"DENSITY", M, Cont, handle_density},
-    {"PLASTIC", M, Cont, handle_plastic},
-    {"EXPANSION", M, Cont, handle_expansion},
-    {"SOLIDSECTION", M, Ends, handle_solid_section},
-    {"INITIALCONDITIONS", M, Ends, handle_initial_conditions},
-    {"EQUATION", M, Ends, handle_equation},
-    {"AMPLITUDE", A, Ends, handle_amplitude},
-    {"BOUNDARY", A, Ends, handle_boundary},
-    {"STEP", M, Ends, handle_step},  // opens a step: checked as model-level
-    {"STATIC", S, Ends, handle_static},
-    {"CONTROLS", S, Ends, handle_controls},
-    {"ENDSTEP", S, Ends, handle_end_step},
-    {"CLOAD", S, Ends, handle_cload},
-    {"DLOAD", S, Ends, handle_dload},
-    {"TEMPERATURE", S, Ends, handle_temperature},
-    {"NODEPRINT", S, Ends, handle_node_print},
-    {"ELPRINT", S, Ends, handle_el_print},
-    {"NODEFILE", S, Ends, handle_node_file},
-    {"NODEOUTPUT", S, Ends, handle_node_file},
-    {"ELFILE", S, Ends, handle_el_file},
-    {"ELEMENTOUTPUT", S, Ends, handle_el_file},
-    {"OUTPUT", S, Ends, handle_output},
+constexpr std::array<KeywordSpec, 40> kKeywords{{
+    {"HEADING", M, None, handle_heading},
+    {"NODE", M, None, handle_node},
+    {"ELEMENT", M, None, handle_element},
+    {"NSET", M, None, handle_nset},
+    {"ELSET", M, None, handle_elset},
+    {"SURFACE", M, None, handle_surface},
+    {"MATERIAL", M, Mat, handle_material},
+    {"ELASTIC", M, Mat, handle_elastic},
+    {"DENSITY", M, Mat, handle_density},
+    {"PLASTIC", M, Mat, handle_plastic},
+    {"EXPANSION", M, Mat, handle_expansion},
+    {"SOLIDSECTION", M, None, handle_solid_section},
+    {"SURFACEINTERACTION", M, Inter, handle_surface_interaction},
+    {"SURFACEBEHAVIOR", M, Inter, handle_surface_behavior},
+    {"FRICTION", A, Inter, handle_friction},  // in a step: after *CHANGE FRICTION
+    {"CONTACTPAIR", M, None, handle_contact_pair},
+    {"INITIALCONDITIONS", M, None, handle_initial_conditions},
+    {"EQUATION", M, None, handle_equation},
+    {"AMPLITUDE", A, None, handle_amplitude},
+    {"BOUNDARY", A, None, handle_boundary},
+    {"STEP", M, None, handle_step},  // opens a step: checked as model-level
+    {"STATIC", S, None, handle_static},
+    {"CONTROLS", S, None, handle_controls},
+    {"CHANGEFRICTION", S, Inter, handle_change_friction},
+    {"ENDSTEP", S, None, handle_end_step},
+    {"CLOAD", S, None, handle_cload},
+    {"DLOAD", S, None, handle_dload},
+    {"TEMPERATURE", S, None, handle_temperature},
+    {"NODEPRINT", S, None, handle_node_print},
+    {"ELPRINT", S, None, handle_el_print},
+    {"NODEFILE", S, None, handle_node_file},
+    {"NODEOUTPUT", S, None, handle_node_file},
+    {"ELFILE", S, None, handle_el_file},
+    {"ELEMENTOUTPUT", S, None, handle_el_file},
+    {"OUTPUT", S, None, handle_output},
+    {"CONTACTPRINT", S, None, handle_contact_print},
+    {"CONTACTFILE", S, None, handle_contact_file},
+    {"CONTACTOUTPUT", S, None, handle_contact_file},
     // Only change how results are written, never the solution: accepted with a warning.
-    {"FILEFORMAT", A, Ends, handle_ignored_output},
+    {"FILEFORMAT", A, None, handle_ignored_output},
 }};
 
 void check_placement(const Record& record, const KeywordSpec& spec, const DeckState& state) {
@@ -78,7 +87,8 @@ void dispatch_records(const std::vector<Record>& records, DeckState& state) {
     const KeywordSpec* spec = find_keyword(record.key);
     if (spec == nullptr) fail(record, "keyword not supported");
     check_placement(record, *spec, state);
-    if (spec->material == MaterialContext::Ends) state.current_material = -1;
+    if (spec->block != Block::Material) state.current_material = -1;
+    if (spec->block != Block::Interaction) state.current_interaction = -1;
     spec->handler(record, state);
   }
 }

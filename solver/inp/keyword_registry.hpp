@@ -14,15 +14,16 @@ enum class Placement {
   Anywhere,  ///< both (e.g. *BOUNDARY, *AMPLITUDE)
 };
 
-/// What a material keyword does to the "current material" context.
-enum class MaterialContext { Ends, Continues };
+/// The data block (*MATERIAL or *SURFACE INTERACTION and the cards below it) a keyword
+/// belongs to. Any keyword outside a block closes the open block, as in ccx.
+enum class Block { None, Material, Interaction };
 
 using KeywordHandler = void (*)(const Record&, DeckState&);
 
 struct KeywordSpec {
   std::string_view key;  ///< blank-free upper case, as Record::key
   Placement placement;
-  MaterialContext material;
+  Block block;
   KeywordHandler handler;
 };
 

@@ -1,5 +1,6 @@
-// *CONTROLS: the mechanical solution controls of ccx (TIME INCREMENTATION, FIELD), RESET.
-// Settings stay in force for later steps until RESET, as in ccx.
+// *CONTROLS: the mechanical solution controls of ccx (TIME INCREMENTATION, FIELD), the
+// contact controls (CONTACT, LINE SEARCH), RESET. Settings stay in force for later steps until
+// RESET, as in ccx.
 #include <type_traits>
 
 #include "inp/keyword_handlers.hpp"
@@ -44,10 +45,16 @@ void read_time_incrementation(const Record& record, nonlinear::SolutionControls&
   for (std::size_t k = 0; k < reals.fields.size(); ++k) set_if_given(record, reals, k, *factors[k]);
 }
 
-void read_field(const Record& record, nonlinear::SolutionControls& c) {
+/// The one data line of FIELD, LINE SEARCH and CONTACT, with up to `max_fields` values.
+const DataLine& single_data_line(const Record& record, std::size_t max_fields) {
   require_line_count(record, 1, 1);
   const DataLine& line = record.lines[0];
-  require_field_count(record, line, 1, 8);
+  require_field_count(record, line, 1, max_fields);
+  return line;
+}
+
+void read_field(const Record& record, nonlinear::SolutionControls& c) {
+  const DataLine& line = single_data_line(record, 8);
   // R_n C_n q_0 q_u R_p epsilon C_epsilon R_l
   Real* targets[] = {&c.residual_tolerance, &c.correction_tolerance, &c.initial_force_average,
                      &c.fixed_force_average, &c.loose_residual_tolerance, &c.zero_flux_ratio,
@@ -55,16 +62,43 @@ void read_field(const Record& record, nonlinear::SolutionControls& c) {
   for (std::size_t k = 0; k < line.fields.size(); ++k) set_if_given(record, line, k, *targets[k]);
 }
 
+/// LINE SEARCH: "unused, lower bound, upper bound, unused, unused". ccx's manual labels the
+/// 2nd value the maximum, but its code uses it as the lower bound (defaults 0.25 and 1.01), so
+/// decks written for ccx mean that (ccx-behaviour.md section 1.6).
+void read_line_search(const Record& record, model::ContactControls& c) {
+  const DataLine& line = single_data_line(record, 5);
+  set_if_given(record, line, 1, c.line_search_min);
+  set_if_given(record, line, 2, c.line_search_max);
+  if (!(c.line_search_min > 0)) fail(record, line, "the lower bound (field 2) must be positive");
+  if (c.line_search_max < c.line_search_min)
+    fail(record, line, "the upper bound (field 3) is below the lower bound (field 2)");
+}
+
+/// CONTACT: "delcon, alea, kscalemax, itf2f" with ccx's ranges.
+void read_contact(const Record& record, model::ContactControls& c) {
+  const DataLine& line = single_data_line(record, 4);
+  set_if_given(record, line, 0, c.delcon);
+  set_if_given(record, line, 1, c.alea);
+  set_if_given(record, line, 2, c.kscalemax);
+  set_if_given(record, line, 3, c.itf2f);
+  if (c.alea > 1) fail(record, line, "alea (field 2) must lie in [0, 1]");
+  if (c.kscalemax < 1) fail(record, line, "kscalemax (field 3) must be at least 1");
+}
+
 }  // namespace
 
 void handle_controls(const Record& record, DeckState& state) {
   check_params(record, {"PARAMETERS", "RESET", "FIELD"});
   nonlinear::SolutionControls& c = state.active.controls;
+  model::ContactControls& contact = state.active.contact_controls;
   if (has_param(record, "RESET")) {
     c = nonlinear::SolutionControls{};
+    contact = model::ContactControls{};
   } else {
     const std::optional<std::string> which = name_value(record, "PARAMETERS");
-    if (!which) fail(record, "PARAMETERS= (TIME INCREMENTATION or FIELD) or RESET is required");
+    if (!which)
+      fail(record,
+           "PARAMETERS= (TIME INCREMENTATION, FIELD, CONTACT or LINE SEARCH) or RESET is required");
     // Blanks inside keyword values do not count (ccx): TIME INCREMENTATION = TIMEINCREMENTATION.
     const std::string kind = remove_blanks(to_upper(*which));
     if (kind == "TIMEINCREMENTATION") {
@@ -73,14 +107,16 @@ void handle_controls(const Record& record, DeckState& state) {
       if (const auto field = name_value(record, "FIELD"); field && to_upper(*field) != "DISPLACEMENT")
         fail(record, "FIELD=" + *field + " is not supported (only DISPLACEMENT)");
       read_field(record, c);
-    } else if (kind == "LINESEARCH" || kind == "CONTACT") {
-      state.warn(record.where, record.keyword,
-                 "PARAMETERS=" + kind + " has no effect yet (no line search, no contact)");
+    } else if (kind == "LINESEARCH") {
+      read_line_search(record, contact);
+    } else if (kind == "CONTACT") {
+      read_contact(record, contact);
     } else {
       fail(record, "PARAMETERS=" + kind + " is not supported");
     }
   }
   state.open_step->step.controls = c;
+  state.open_step->step.contact_controls = contact;
 }
 
 }  // namespace kontakt::inp

@@ -65,11 +65,7 @@ void handle_plastic(const Record& record, DeckState& state) {
   std::optional<Real> temperature;
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 2, 3);
-    if (const auto t = optional_real_field(record, line, 2)) {
-      if (temperature && *t != *temperature)
-        fail(record, line, "temperature-dependent hardening is not supported yet");
-      temperature = t;
-    }
+    require_one_temperature(record, line, 2, temperature, "temperature-dependent hardening");
     const Real stress = real_field(record, line, 0), strain = real_field(record, line, 1);
     if (!(stress >= 0)) fail(record, line, "the yield stress must not be negative");
     if (material.plastic.empty() ? strain != 0 : !(strain > material.plastic.back().second))

@@ -64,7 +64,11 @@ void add_listed(const Record& record, const DataLine& line, std::map<std::string
 
 void handle_set(const Record& record, DeckState& state, std::map<std::string, RawSet>& sets,
                 std::string_view name_param) {
-  check_params(record, {name_param, "GENERATE"});
+  // ccx ignores other parameters of a set card with a warning (friction2 has *NSET,
+  // FREQUENCY=100): the data lines alone decide the members, so we do the same.
+  for (const Param& param : record.params)
+    if (param.name != name_param && param.name != "GENERATE")
+      state.warn(record.where, record.keyword, param.name + " ignored (as ccx does)");
   const std::string name = set_name(required_value(record, name_param));
   open_set(sets, name, record.where);
   const bool generate = has_param(record, "GENERATE");

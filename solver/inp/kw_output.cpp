@@ -1,6 +1,11 @@
-// Output requests. ccx rules (manual, *NODE PRINT/*EL PRINT/*NODE FILE/*EL FILE): the first
-// card of a kind within a step wipes the selections of earlier steps; without one, the previous
-// step's selections apply. The last FREQUENCY= given applies to all outputs and persists.
+// Output requests. ccx rules (manual, *NODE PRINT/*EL PRINT/*CONTACT PRINT/*NODE FILE/*EL FILE/
+// *CONTACT FILE): the first card of a kind within a step wipes the selections of earlier steps;
+// without one, the previous step's selections apply. The last FREQUENCY= given applies to all
+// outputs and persists. Node, element and contact prints share one list, whose order is the
+// order of the .dat blocks.
+#include <algorithm>
+#include <array>
+
 #include "inp/keyword_handlers.hpp"
 #include "inp/model_builder.hpp"
 #include "inp/record_access.hpp"
@@ -62,7 +67,7 @@ model::PrintRequest print_request(const Record& record, DeckState& state,
 
 /// Options of file output that only change how the file is written: accepted, noted.
 void warn_file_layout_params(const Record& record, DeckState& state) {
-  for (std::string_view name : {"OUTPUT", "NSET", "ELSET"}) {
+  for (std::string_view name : {"OUTPUT", "NSET", "ELSET", "POSITION"}) {
     if (has_param(record, name)) {
       state.warn(record.where, record.keyword, std::string(name) + "= ignored");
     }
@@ -70,7 +75,7 @@ void warn_file_layout_params(const Record& record, DeckState& state) {
 }
 
 model::FileRequest file_request(const Record& record, DeckState& state) {
-  check_params(record, {"FREQUENCY", "GLOBAL", "OUTPUT", "NSET", "ELSET"});
+  check_params(record, {"FREQUENCY", "GLOBAL", "OUTPUT", "NSET", "ELSET", "POSITION"});
   (void)yes_no(record, "GLOBAL", true);  // no transforms: global and local coincide
   warn_file_layout_params(record, state);
   read_frequency(record, state);
@@ -80,18 +85,106 @@ model::FileRequest file_request(const Record& record, DeckState& state) {
   return request;
 }
 
+constexpr std::array<std::string_view, 3> kContactVariables{"CDIS", "CSTR", "CELS"};
+
+/// The first *NODE PRINT (or *EL PRINT) of a step removes the earlier node (element) prints.
+void add_print(DeckState& state, const std::string& kind, model::PrintRequest request) {
+  const model::PrintRequest::Kind wiped = request.kind;
+  if (first_in_step(state, kind)) {
+    std::erase_if(state.active.prints, [&](const PrintEntry& entry) {
+      const auto* print = std::get_if<model::PrintRequest>(&entry);
+      return print != nullptr && print->kind == wiped;
+    });
+  }
+  state.active.prints.emplace_back(std::move(request));
+}
+
+/// Contact output variables. ccx compares the first four letters (CDISP = CDIS, CSTRESS =
+/// CSTR; CF, CFN, CFS are whole names). Variables ccx has but Kontakt does not write
+/// (`not_written`) are dropped with a warning, so ccx decks run; anything else is a typo and an
+/// error.
+std::vector<std::string> contact_variables(const Record& record, DeckState& state,
+                                           std::initializer_list<std::string_view> not_written) {
+  const auto same = [](const std::string& name, std::string_view label) {
+    return label.size() == 4 ? name.starts_with(label) : name == label;
+  };
+  std::vector<std::string> variables;
+  bool any = false;
+  for (const DataLine& line : record.lines) {
+    for (const std::string& field : line.fields) {
+      if (field.empty()) continue;
+      any = true;
+      const std::string name = remove_blanks(to_upper(field));
+      const auto written = std::find_if(kContactVariables.begin(), kContactVariables.end(),
+                                        [&](std::string_view v) { return same(name, v); });
+      if (written != kContactVariables.end()) {
+        if (std::find(variables.begin(), variables.end(), *written) == variables.end())
+          variables.emplace_back(*written);
+      } else if (std::any_of(not_written.begin(), not_written.end(),
+                             [&](std::string_view v) { return same(name, v); })) {
+        state.warn(line.where, record.keyword, name + " is not written by Kontakt; dropped");
+      } else {
+        fail(record, line, "unknown contact output variable " + name + " (CDIS, CSTR or CELS)");
+      }
+    }
+  }
+  if (!any) fail(record, "no output variables given");
+  if (state.contact_pairs.empty())
+    state.warn(record.where, record.keyword, "the deck has no *CONTACT PAIR: nothing to write");
+  return variables;
+}
+
 }  // namespace
 
 void handle_node_print(const Record& record, DeckState& state) {
-  auto request = print_request(record, state, model::PrintRequest::Kind::Node, "NSET");
-  if (first_in_step(state, "NODEPRINT")) state.active.node_prints.clear();
-  state.active.node_prints.push_back(std::move(request));
+  add_print(state, "NODEPRINT",
+            print_request(record, state, model::PrintRequest::Kind::Node, "NSET"));
 }
 
 void handle_el_print(const Record& record, DeckState& state) {
-  auto request = print_request(record, state, model::PrintRequest::Kind::Element, "ELSET");
-  if (first_in_step(state, "ELPRINT")) state.active.element_prints.clear();
-  state.active.element_prints.push_back(std::move(request));
+  add_print(state, "ELPRINT",
+            print_request(record, state, model::PrintRequest::Kind::Element, "ELSET"));
+}
+
+void handle_contact_print(const Record& record, DeckState& state) {
+  check_params(record, {"FREQUENCY", "TOTALS", "NSET", "SLAVE", "MASTER"});
+  // ccx ignores NSET= here too (friction1 has it); SLAVE= and MASTER= select the surfaces of
+  // CF, CFN and CFS, which Kontakt does not print.
+  for (std::string_view name : {"NSET", "SLAVE", "MASTER"})
+    if (has_param(record, name))
+      state.warn(record.where, record.keyword, std::string(name) + "= ignored");
+  model::ContactRequest request;
+  request.where = record.where;
+  const std::string totals = name_value(record, "TOTALS").value_or("NO");
+  if (totals != "YES" && totals != "ONLY" && totals != "NO")
+    fail(record, "TOTALS=" + totals + ": expected YES, ONLY or NO");
+  request.totals = totals == "YES";
+  request.totals_only = totals == "ONLY";
+  read_frequency(record, state);
+  request.variables = contact_variables(record, state, {"CNUM", "CF", "CFN", "CFS"});
+  if (first_in_step(state, "CONTACTPRINT"))
+    std::erase_if(state.active.prints, [](const PrintEntry& entry) {
+      return std::holds_alternative<model::ContactRequest>(entry);
+    });
+  if (!request.variables.empty()) state.active.prints.emplace_back(std::move(request));
+}
+
+void handle_contact_file(const Record& record, DeckState& state) {
+  check_params(record, {"FREQUENCY", "GLOBAL", "OUTPUT", "NSET", "LASTITERATIONS",
+                        "CONTACTELEMENTS"});
+  (void)yes_no(record, "GLOBAL", true);
+  warn_file_layout_params(record, state);
+  // ccx's debugging files (ResultsForLastIterations.frd, contactelements.inp).
+  for (std::string_view name : {"LASTITERATIONS", "CONTACTELEMENTS"})
+    if (has_param(record, name))
+      state.warn(record.where, record.keyword, std::string(name) + " ignored");
+  model::ContactRequest request;
+  request.where = record.where;
+  read_frequency(record, state);
+  request.variables = contact_variables(record, state, {"PCON"});
+  // *CONTACT OUTPUT is ccx's synonym of *CONTACT FILE: one kind for the wipe rule.
+  if (first_in_step(state, "CONTACTFILE")) state.active.contact_files.clear();
+  if (!request.variables.empty()) state.active.contact_files.push_back(std::move(request));
 }
 
 void handle_node_file(const Record& record, DeckState& state) {

@@ -16,6 +16,7 @@ void handle_step(const Record& record, DeckState& state) {
   // ccx: once NLGEOM is selected it stays active in subsequent steps unless switched off.
   progress.step.nlgeom = state.active.nlgeom;
   progress.step.controls = state.active.controls;
+  progress.step.contact_controls = state.active.contact_controls;
   if (const Param* nlgeom = find_param(record, "NLGEOM")) {
     const std::string value = nlgeom->has_value ? to_upper(nlgeom->value) : "YES";
     if (value != "YES" && value != "NO") fail(record, "NLGEOM=" + value + ": expected YES or NO");
@@ -72,17 +73,26 @@ VecX step_temperatures(const DeckState& state) {
   return temps;
 }
 
-std::vector<model::PrintRequest> step_prints(const ActiveLoads& active) {
-  std::vector<model::PrintRequest> prints = active.node_prints;
-  prints.insert(prints.end(), active.element_prints.begin(), active.element_prints.end());
-  for (auto& p : prints) p.frequency = active.output_frequency;
-  return prints;
+/// Splits ccx's one print list into the step's node/element and contact prints, keeping where
+/// each contact print sits in it.
+void set_step_prints(const ActiveLoads& active, model::Step& step) {
+  for (const PrintEntry& entry : active.prints) {
+    if (const auto* print = std::get_if<model::PrintRequest>(&entry)) {
+      step.prints.push_back(*print);
+      step.prints.back().frequency = active.output_frequency;
+    } else {
+      model::ContactRequest contact = std::get<model::ContactRequest>(entry);
+      contact.frequency = active.output_frequency;
+      contact.after_prints = step.prints.size();
+      step.contact_prints.push_back(std::move(contact));
+    }
+  }
 }
 
-std::vector<model::FileRequest> with_frequency(std::vector<model::FileRequest> files,
-                                               int frequency) {
-  for (auto& f : files) f.frequency = frequency;
-  return files;
+template <class Request>
+std::vector<Request> with_frequency(std::vector<Request> requests, int frequency) {
+  for (auto& r : requests) r.frequency = frequency;
+  return requests;
 }
 
 }  // namespace
@@ -100,9 +110,11 @@ void handle_end_step(const Record& record, DeckState& state) {
   step.cloads = values_of(active.cloads);
   step.pressures = values_of(active.pressures);
   step.temperatures = step_temperatures(state);
-  step.prints = step_prints(active);
+  set_step_prints(active, step);
   step.node_files = with_frequency(active.node_files, active.output_frequency);
   step.element_files = with_frequency(active.element_files, active.output_frequency);
+  step.contact_files = with_frequency(active.contact_files, active.output_frequency);
+  state.step_friction_changes.push_back(active.friction_changes);
   active.nlgeom = step.nlgeom;
 
   const auto& amplitudes = state.model.amplitudes;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "inp/contact_builder.hpp"
 #include "inp/element_names.hpp"
 #include "inp/record_access.hpp"
 
@@ -232,6 +233,7 @@ model::Model finish_model(DeckState& state) {
   }
   assign_sections(state);
   require_sections(state);
+  resolve_contact(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());
     for (const auto& [node, value] : state.initial_temperatures) {

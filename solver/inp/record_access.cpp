@@ -146,6 +146,14 @@ Real real_field_or(const Record& record, const DataLine& line, std::size_t index
   return optional_real_field(record, line, index).value_or(fallback);
 }
 
+void require_one_temperature(const Record& record, const DataLine& line, std::size_t index,
+                             std::optional<Real>& seen, const std::string& what) {
+  const std::optional<Real> t = optional_real_field(record, line, index);
+  if (!t) return;
+  if (seen && *t != *seen) fail(record, line, what + " is not supported");
+  seen = t;
+}
+
 void require_line_count(const Record& record, std::size_t min, std::size_t max) {
   const std::size_t n = record.lines.size();
   if (n < min) fail(record, "expected at least " + std::to_string(min) + " data line(s)");

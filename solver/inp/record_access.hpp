@@ -41,6 +41,11 @@ std::optional<Real> optional_real_field(const Record& record, const DataLine& li
 std::optional<Real> parse_real(std::string_view text);
 std::optional<int> parse_int(std::string_view text);
 
+/// Optional temperature column `index` of a table row: throws (`what` + " is not supported")
+/// when it differs from the temperature seen in an earlier row, kept in `seen`.
+void require_one_temperature(const Record& record, const DataLine& line, std::size_t index,
+                             std::optional<Real>& seen, const std::string& what);
+
 /// Throws unless the record has between min and max data lines.
 void require_line_count(const Record& record, std::size_t min, std::size_t max);
 /// Throws unless the line has between min and max fields.

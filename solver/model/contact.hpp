@@ -5,6 +5,7 @@
 // already resolved by the reader, so every value here is the one the analysis uses.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
@@ -38,6 +39,8 @@ struct Friction {
 struct SurfaceInteraction {
   std::string name;          ///< upper case
   SurfaceBehavior behavior;
+  /// The model's *FRICTION; *CHANGE FRICTION can replace it from a step on, so the analysis
+  /// reads the friction in force from Step::interaction_friction.
   std::optional<Friction> friction;
   SourceLoc where;
 };
@@ -88,6 +91,10 @@ struct ContactRequest {
   bool totals = false;       ///< TOTALS=YES (print only)
   bool totals_only = false;  ///< TOTALS=ONLY
   int frequency = 1;
+  /// *CONTACT PRINT only: ccx keeps node, element and contact prints in one list and writes
+  /// the .dat blocks in that order; this request comes after the first `after_prints`
+  /// entries of Step::prints (requests with equal values keep their order).
+  std::size_t after_prints = 0;
   SourceLoc where;
 };
 

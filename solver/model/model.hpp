@@ -165,6 +165,9 @@ struct Step {
   std::vector<FileRequest> node_files, element_files;
   ContactControls contact_controls;  ///< *CONTROLS, PARAMETERS=CONTACT / LINE SEARCH in force
   std::vector<ContactRequest> contact_prints, contact_files;
+  /// Per interaction (Model::interactions order): the friction in force in this step, i.e. the
+  /// interaction's *FRICTION as changed by *CHANGE FRICTION in this or an earlier step.
+  std::vector<std::optional<Friction>> interaction_friction;
 };
 
 struct Model {

@@ -1,7 +1,10 @@
 #include "output/dat_writer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <limits>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "output/dat_headers.hpp"
@@ -30,11 +33,19 @@ std::string total_row(It begin, It end) {
   return s;
 }
 
+bool output_due(int frequency, const Frame& frame) {
+  if (frequency <= 0) return false;
+  return frame.is_step_end || frame.increment % frequency == 0;
+}
+
 }  // namespace
 
 bool print_due(const model::PrintRequest& request, const Frame& frame) {
-  if (request.frequency <= 0) return false;
-  return frame.is_step_end || frame.increment % request.frequency == 0;
+  return output_due(request.frequency, frame);
+}
+
+bool print_due(const model::ContactRequest& request, const Frame& frame) {
+  return output_due(request.frequency, frame);
 }
 
 DatWriter::DatWriter(const model::Model& model, std::filesystem::path path)
@@ -47,13 +58,22 @@ void DatWriter::header(std::string_view prefix, const std::string& set, const Fr
 }
 
 void DatWriter::write(const model::Step& step, const Frame& frame) {
-  for (const auto& r : step.prints) {
+  // Contact prints sit between the node and element prints (ccx keeps one print list).
+  auto contact = step.contact_prints.begin();
+  const auto contact_prints_up_to = [&](std::size_t position) {
+    for (; contact != step.contact_prints.end() && contact->after_prints <= position; ++contact)
+      if (print_due(*contact, frame)) contact_request(*contact, frame);
+  };
+  for (std::size_t i = 0; i < step.prints.size(); ++i) {
+    contact_prints_up_to(i);
+    const auto& r = step.prints[i];
     if (!print_due(r, frame)) continue;
     if (r.kind == model::PrintRequest::Kind::Node)
       node_request(r, frame);
     else
       element_request(r, frame);
   }
+  contact_prints_up_to(std::numeric_limits<std::size_t>::max());
   out_.flush();
   if (!out_) throw SolverError("write error on " + path_.string());
 }
@@ -179,6 +199,66 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
     } else if (var == "EVOL") {
       KONTAKT_REQUIRE(f.EVOL.size() == model_.n_elements(), "DatWriter: EVOL has wrong size");
       per_element(DatBlock::EVOL, DatBlock::EVOL_TOTAL, [&](int e) { return f.EVOL(e); });
+    }
+  }
+}
+
+void DatWriter::contact_request(const model::ContactRequest& r, const Frame& f) {
+  if (model_.contact_pairs.empty()) return;
+  const bool by_node =
+      model_.contact_pairs.front().type == model::ContactPair::Type::NodeToSurface;
+  const auto& mesh = model_.mesh;
+  std::vector<const ContactPointRecord*> rows;
+  for (const auto& p : f.contact_points)
+    if (p.active) rows.push_back(&p);
+  // ccx's order of contact elements: pair, then slave node or slave element and face.
+  const auto key = [&](const ContactPointRecord* p) {
+    if (by_node) {
+      KONTAKT_REQUIRE(p->slave_node >= 0, "DatWriter: contact point without slave node");
+      return std::make_tuple(p->pair, mesh.node_ids[static_cast<std::size_t>(p->slave_node)], 0);
+    }
+    KONTAKT_REQUIRE(p->slave_element >= 0, "DatWriter: contact point without slave face");
+    return std::make_tuple(p->pair, mesh.elements[static_cast<std::size_t>(p->slave_element)].id,
+                           p->slave_face);
+  };
+  std::stable_sort(rows.begin(), rows.end(),
+                   [&](const auto* a, const auto* b) { return key(a) < key(b); });
+
+  const auto header = [&](DatBlock block) {
+    out_ << '\n' << dat_header_prefix(block) << fortran_e14_7(f.total_time) << "\n\n";
+  };
+  // Rows: node (i10,1p,n(1x,e13.6)); element and face (i10,1x,i10,1p,n(1x,e13.6)).
+  const auto block = [&](DatBlock by_node_block, DatBlock by_face_block, auto values_of) {
+    header(by_node ? by_node_block : by_face_block);
+    for (const ContactPointRecord* p : rows) {
+      const auto [pair, label, face] = key(p);
+      out_ << i10(label);
+      if (!by_node) out_ << ' ' << i10(face);
+      for (Real v : values_of(*p)) out_ << ' ' << fortran_e13_6(v);
+      out_ << '\n';
+    }
+  };
+  using Values3 = std::array<Real, 3>;
+  for (const auto& var : r.variables) {
+    // TOTALS=ONLY leaves out every per-point block, and only CELS has a total (ccx 2.20).
+    if (var == "CDIS" && !r.totals_only) {
+      block(DatBlock::CDIS_NODE, DatBlock::CDIS_FACE, [](const ContactPointRecord& p) {
+        return Values3{p.clearance, p.slip(0), p.slip(1)};
+      });
+    } else if (var == "CSTR" && !r.totals_only) {
+      block(DatBlock::CSTR_NODE, DatBlock::CSTR_FACE, [](const ContactPointRecord& p) {
+        return Values3{p.pressure, p.shear(0), p.shear(1)};
+      });
+    } else if (var == "CELS") {
+      if (!r.totals_only)
+        block(DatBlock::CELS_NODE, DatBlock::CELS_FACE,
+              [](const ContactPointRecord& p) { return std::array<Real, 1>{p.energy}; });
+      if (r.totals || r.totals_only) {
+        Real total = 0;
+        for (const ContactPointRecord* p : rows) total += p->energy;
+        header(DatBlock::CELS_TOTAL);
+        out_ << total_row(&total, &total + 1) << '\n';
+      }
     }
   }
 }

@@ -1,4 +1,5 @@
-// The .dat file in CalculiX 2.20's exact layout: *NODE PRINT / *EL PRINT blocks.
+// The .dat file in CalculiX 2.20's exact layout: *NODE PRINT / *EL PRINT / *CONTACT PRINT
+// blocks.
 #pragma once
 
 #include <filesystem>
@@ -15,6 +16,8 @@ namespace kontakt::output {
 /// ccx note: ccx applies ONE print frequency to all requests, the last FREQUENCY= given, carried
 /// into later steps; the deck reader is expected to store that effective value in each request.
 bool print_due(const model::PrintRequest& request, const Frame& frame);
+/// The same rule for a *CONTACT PRINT request.
+bool print_due(const model::ContactRequest& request, const Frame& frame);
 
 class DatWriter {
  public:
@@ -22,8 +25,15 @@ class DatWriter {
   DatWriter(const model::Model& model, std::filesystem::path path);
 
   /// Appends the blocks of every print request of `step` that is due at `frame`, in request
-  /// order and, within a request, in the order its variables were given. Unknown variables
-  /// are skipped. Throws SolverError when a set is missing or the frame is too small.
+  /// order (contact prints where ContactRequest::after_prints puts them) and, within a
+  /// request, in the order its variables were given. Unknown variables are skipped. Throws
+  /// SolverError when a set is missing or the frame is too small.
+  ///
+  /// Contact prints list the active points of Frame::contact_points, as ccx lists its contact
+  /// elements: by pair, then by slave node label (node-to-surface) or by slave element label
+  /// and face (surface-to-surface; a face's points keep their order). Headers say "slave node"
+  /// or "slave element+face" by the type of the deck's pairs (ccx allows only one type per
+  /// deck); a deck without pairs prints no contact blocks.
   void write(const model::Step& step, const Frame& frame);
 
   const std::filesystem::path& path() const { return path_; }
@@ -31,6 +41,7 @@ class DatWriter {
  private:
   void node_request(const model::PrintRequest& r, const Frame& f);
   void element_request(const model::PrintRequest& r, const Frame& f);
+  void contact_request(const model::ContactRequest& r, const Frame& f);
   void header(std::string_view prefix, const std::string& set, const Frame& f);
 
   const model::Model& model_;

@@ -17,6 +17,8 @@ struct ContactPointRecord {
   Vec2 xi = Vec2::Zero();    ///< local coordinates in the slave face
   Vec3 x = Vec3::Zero();     ///< current position of the point
   bool active = false;       ///< carries force in the converged state
+  /// Active and inside the Coulomb cone (friction or TIED); frictionless points slide.
+  bool sticking = false;
   Real clearance = 0;        ///< g = -overclosure: negative when penetrating (ccx's COPEN sign)
   Real pressure = 0;         ///< positive in compression (TIED may be negative)
   Vec2 slip = Vec2::Zero();  ///< tangential relative displacement along t1, t2 (CSLIP1/2)

@@ -157,6 +157,69 @@ std::vector<double> mises(const MatX6& s) {
   return out;
 }
 
+/// Columns of the nodal contact arrays, named as ccx's CONTACT block components.
+void write_contact_nodal(hid_t frame, const ContactNodal& c, hsize_t n,
+                         std::vector<std::string>& names) {
+  KONTAKT_REQUIRE(static_cast<hsize_t>(c.CPRESS.size()) == n &&
+                      static_cast<hsize_t>(c.COPEN.size()) == n &&
+                      static_cast<hsize_t>(c.CSHEAR.rows()) == n && c.CSHEAR.cols() == 2 &&
+                      static_cast<hsize_t>(c.CSLIP.rows()) == n && c.CSLIP.cols() == 2 &&
+                      static_cast<hsize_t>(c.CSTATUS.size()) == n,
+                  "Hdf5Writer: contact arrays have wrong sizes");
+  const auto scalar = [&](const char* name, const VecX& v) {
+    write_f64(frame, name, v.data(), {n});
+    names.emplace_back(name);
+  };
+  scalar("CPRESS", c.CPRESS);
+  scalar("COPEN", c.COPEN);
+  scalar("CSHEAR1", c.CSHEAR.col(0));
+  scalar("CSHEAR2", c.CSHEAR.col(1));
+  scalar("CSLIP1", c.CSLIP.col(0));
+  scalar("CSLIP2", c.CSLIP.col(1));
+  scalar("CSTATUS", c.CSTATUS);
+}
+
+/// /frames/NNNNNN/contact_points: one row per contact point, deck labels, status 0 open,
+/// 1 stick, 2 slip.
+void write_contact_points(hid_t frame, const model::Model& model,
+                          const std::vector<ContactPointRecord>& points) {
+  Handle t = make_group(frame, "contact_points");
+  const auto p = static_cast<hsize_t>(points.size());
+  std::vector<std::int64_t> pair, element, face, node, status;
+  std::vector<double> xi, x, clearance, pressure, slip, shear, area, energy;
+  for (const ContactPointRecord& r : points) {
+    pair.push_back(r.pair);
+    element.push_back(r.slave_element < 0
+                          ? -1
+                          : model.mesh.elements[static_cast<std::size_t>(r.slave_element)].id);
+    face.push_back(r.slave_face);
+    node.push_back(r.slave_node < 0 ? -1
+                                    : model.mesh.node_ids[static_cast<std::size_t>(r.slave_node)]);
+    status.push_back(!r.active ? 0 : r.sticking ? 1 : 2);
+    xi.insert(xi.end(), {r.xi(0), r.xi(1)});
+    x.insert(x.end(), {r.x(0), r.x(1), r.x(2)});
+    clearance.push_back(r.clearance);
+    pressure.push_back(r.pressure);
+    slip.insert(slip.end(), {r.slip(0), r.slip(1)});
+    shear.insert(shear.end(), {r.shear(0), r.shear(1)});
+    area.push_back(r.area);
+    energy.push_back(r.energy);
+  }
+  write_i64(t, "pair", pair);
+  write_i64(t, "slave_element", element);
+  write_i64(t, "slave_face", face);
+  write_i64(t, "slave_node", node);
+  write_i64(t, "status", status);
+  write_f64(t, "xi", xi.data(), {p, 2});
+  write_f64(t, "x", x.data(), {p, 3});
+  write_f64(t, "clearance", clearance.data(), {p});
+  write_f64(t, "pressure", pressure.data(), {p});
+  write_f64(t, "slip", slip.data(), {p, 2});
+  write_f64(t, "shear", shear.data(), {p, 2});
+  write_f64(t, "area", area.data(), {p});
+  write_f64(t, "energy", energy.data(), {p});
+}
+
 struct HistoryRow {
   std::int64_t step, increment, attempts, iterations;
   double total_time, step_time, dt;
@@ -168,22 +231,31 @@ struct HistoryRow {
 // ---------------------------------------------------------------- free functions
 std::set<std::string> requested_fields(const model::Model& model) {
   std::set<std::string> out;
+  const auto add = [&](const auto& requests) {
+    for (const auto& req : requests)
+      for (const auto& v : req.variables)
+        if (kHdf5Fields.count(v)) out.insert(v);
+  };
   for (const auto& step : model.steps) {
-    for (const auto* list : {&step.node_files, &step.element_files})
-      for (const auto& req : *list)
-        for (const auto& v : req.variables)
-          if (kHdf5Fields.count(v)) out.insert(v);
+    add(step.node_files);
+    add(step.element_files);
+    add(step.contact_files);
   }
-  if (out.empty()) out = {"U", "S"};
+  if (out.empty()) {
+    out = {"U", "S"};
+    if (!model.contact_pairs.empty()) out.insert({"CDIS", "CSTR", "CELS"});
+  }
   return out;
 }
 
 bool file_output_due(const model::Step& step, const Frame& frame) {
   if (frame.is_step_end) return true;
-  for (const auto* list : {&step.node_files, &step.element_files})
-    for (const auto& req : *list)
+  const auto due = [&](const auto& requests) {
+    for (const auto& req : requests)
       if (req.frequency > 0 && frame.increment % req.frequency == 0) return true;
-  return false;
+    return false;
+  };
+  return due(step.node_files) || due(step.element_files) || due(step.contact_files);
 }
 
 // ---------------------------------------------------------------- writer
@@ -362,6 +434,14 @@ void Hdf5Writer::write(const Frame& fr) {
     KONTAKT_REQUIRE(static_cast<hsize_t>(fr.EVOL.size()) == m, "Hdf5Writer: EVOL");
     write_f64(g, "EVOL", fr.EVOL.data(), {m});
     info.cell_arrays.push_back("EVOL");
+  }
+  // Models without contact pairs get no contact data, whatever the deck requests.
+  if (!model_.contact_pairs.empty()) {
+    if ((want("CDIS") || want("CSTR")) && fr.contact_nodal.CPRESS.size() > 0)
+      write_contact_nodal(g, fr.contact_nodal, n, info.node_arrays);
+    if (want("CDIS") || want("CSTR") || want("CELS")) {
+      write_contact_points(g, model_, fr.contact_points);
+    }
   }
   check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flush");
   frames_.push_back(std::move(info));

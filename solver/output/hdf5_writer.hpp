@@ -13,12 +13,15 @@
 
 namespace kontakt::output {
 
-/// Output fields the HDF5 writer understands (names as in *NODE FILE / *EL FILE).
-inline const std::set<std::string> kHdf5Fields{"U", "RF", "S", "E", "ENER", "PEEQ", "EVOL"};
+/// Output fields the HDF5 writer understands (names as in *NODE FILE / *EL FILE / *CONTACT
+/// FILE; CDIS and CSTR both stand for all nodal contact arrays, as they do in ccx).
+inline const std::set<std::string> kHdf5Fields{"U",    "RF",   "S",    "E",   "ENER",
+                                               "PEEQ", "EVOL", "CDIS", "CSTR", "CELS"};
 
-/// The union over all steps of the *NODE FILE / *EL FILE / *NODE OUTPUT / *ELEMENT OUTPUT
-/// variables we can write (others are dropped). When no step requests anything the default is
-/// {"U", "S"} (a results file without fields is useless in ParaView).
+/// The union over all steps of the *NODE FILE / *EL FILE / *NODE OUTPUT / *ELEMENT OUTPUT /
+/// *CONTACT FILE / *CONTACT OUTPUT variables we can write (others are dropped). When no step
+/// requests anything the default is {"U", "S"}, plus {"CDIS", "CSTR", "CELS"} for a model with
+/// contact pairs (a results file without fields is useless in ParaView).
 std::set<std::string> requested_fields(const model::Model& model);
 
 /// True when any file request of `step` is due at `frame` (every frequency-th increment and at
@@ -35,7 +38,9 @@ class Hdf5Writer {
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
 
-  /// Appends /frames/NNNNNN (numbered from 000001 in call order).
+  /// Appends /frames/NNNNNN (numbered from 000001 in call order). A model with contact pairs
+  /// also gets the nodal contact arrays (CDIS or CSTR requested) and the contact point table
+  /// (any contact field requested).
   void write(const Frame& frame);
   /// Records one attempted increment for /history/increments (written by finish()).
   void add_increment(const IncrementRecord& record);

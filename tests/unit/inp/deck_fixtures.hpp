@@ -36,6 +36,24 @@ Two cubes
 )";
 }
 
+/// The two cubes with contact surfaces on the faces they share (x = 1): MASTER = element 1
+/// face S4, SLAVE = element 2 face S6, SLAVENODES = nodes 6, 7. Lines 27..32; what follows
+/// starts at line 33.
+inline std::string two_cubes_surfaces() {
+  return two_cubes_model() + R"(*SURFACE, NAME=MASTER
+1, S4
+*SURFACE, NAME=SLAVE
+2, S6
+*SURFACE, NAME=SLAVENODES, TYPE=NODE
+6, 7
+)";
+}
+
+/// A linear surface interaction SI (K = 1e7) on three lines.
+inline std::string linear_interaction() {
+  return "*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e7\n";
+}
+
 /// A minimal one-step static analysis on the two cubes.
 inline std::string two_cubes_static() {
   return two_cubes_model() + R"(*BOUNDARY

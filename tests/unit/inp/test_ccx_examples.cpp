@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -51,7 +52,9 @@ bool supported_card(const std::string& keyword, const std::string& card) {
       "HEADING", "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "ELASTIC",
       "DENSITY", "EXPANSION", "SOLIDSECTION", "INITIALCONDITIONS", "EQUATION", "AMPLITUDE",
       "BOUNDARY", "STEP", "STATIC", "ENDSTEP", "CLOAD", "DLOAD", "TEMPERATURE", "NODEPRINT",
-      "ELPRINT", "NODEFILE", "NODEOUTPUT", "ELFILE", "ELEMENTOUTPUT", "OUTPUT", "FILEFORMAT"};
+      "ELPRINT", "NODEFILE", "NODEOUTPUT", "ELFILE", "ELEMENTOUTPUT", "OUTPUT", "FILEFORMAT",
+      "PLASTIC", "CONTROLS", "SURFACEINTERACTION", "SURFACEBEHAVIOR", "FRICTION",
+      "CHANGEFRICTION", "CONTACTPAIR", "CONTACTPRINT", "CONTACTFILE", "CONTACTOUTPUT"};
   static const std::set<std::string> types = {"C3D4",  "C3D6",  "C3D8",  "C3D8R", "C3D8I",
                                               "C3D10", "C3D15", "C3D20", "C3D20R"};
   if (!keywords.contains(keyword)) return false;
@@ -63,6 +66,14 @@ bool supported_card(const std::string& keyword, const std::string& card) {
     return false;
   }
   if (keyword == "INITIALCONDITIONS" && card.find("TYPE=TEMPERATURE") == std::string::npos) {
+    return false;
+  }
+  if (keyword == "CONTACTPAIR" && card.find("TYPE=NODETOSURFACE") == std::string::npos &&
+      card.find("TYPE=SURFACETOSURFACE") == std::string::npos) {
+    return false;  // mortar and massless contact
+  }
+  if (keyword == "PLASTIC" && card.find("HARDENING=") != std::string::npos &&
+      card.find("HARDENING=ISOTROPIC") == std::string::npos) {
     return false;
   }
   if (keyword == "ELEMENT") {
@@ -133,6 +144,76 @@ TEST(inpCcxExamples, QualifyingDecksParse) {
   std::printf("[ ccx examples ] %d qualifying decks parsed, %zu failed, %d skipped\n", parsed,
               failures.size(), skipped);
   EXPECT_GT(parsed, 0);
+}
+
+fs::path example(const std::string& name) {
+  const fs::path plain = kExamples / (name + ".inp");
+  return fs::exists(plain) ? plain : kExamples / (name + ".inp.gz");
+}
+
+/// The frictionless and frictional contact decks of issue 4 parse into what they say.
+TEST(inpCcxExamples, ContactDecksParse) {
+  if (!fs::is_directory(kExamples)) GTEST_SKIP() << kExamples << " not installed";
+  using Type = model::ContactPair::Type;
+  using Law = model::SurfaceBehavior::Law;
+  const std::vector<std::pair<std::string, Type>> decks = {
+      {"contact1", Type::NodeToSurface},      {"contact3", Type::NodeToSurface},
+      {"contact4", Type::SurfaceToSurface},   {"contact6", Type::NodeToSurface},
+      {"contactenergy", Type::SurfaceToSurface}, {"cubespring", Type::NodeToSurface},
+      {"punch1", Type::SurfaceToSurface},     {"punch2", Type::SurfaceToSurface},
+      {"hueeber1", Type::SurfaceToSurface},   {"hueeber2", Type::SurfaceToSurface},
+      {"hueeber3", Type::SurfaceToSurface},   {"hueeber4", Type::SurfaceToSurface},
+      {"friction1", Type::NodeToSurface},     {"friction2", Type::NodeToSurface}};
+  std::map<std::string, model::Model> models;
+  for (const auto& [name, type] : decks) {
+    const fs::path path = example(name);
+    ASSERT_TRUE(fs::exists(path)) << path;
+    try {
+      models.emplace(name, read_deck_text(read_text(path), name + ".inp"));
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << e.what();
+      continue;
+    }
+    const model::Model& m = models.at(name);
+    ASSERT_EQ(m.contact_pairs.size(), 1u) << name;
+    EXPECT_EQ(m.contact_pairs[0].type, type) << name;
+    EXPECT_EQ(model::contact_scheme_name(m.contact_pairs[0].scheme),
+              type == Type::NodeToSurface ? "nts" : "lgc7")
+        << name;
+  }
+  if (::testing::Test::HasFailure()) return;
+  const auto& behavior = [&](const std::string& name) -> const model::SurfaceBehavior& {
+    const model::Model& m = models.at(name);
+    return m.interactions[static_cast<std::size_t>(m.contact_pairs[0].interaction)].behavior;
+  };
+  EXPECT_EQ(behavior("contact1").law, Law::Exponential);
+  EXPECT_DOUBLE_EQ(behavior("contact1").exp_c0, 1.5351e-7);
+  EXPECT_DOUBLE_EQ(behavior("contact3").tension_limit, 3.);
+  EXPECT_DOUBLE_EQ(behavior("hueeber1").stiffness, 1e15);
+  // contactenergy gives K only: sigma_inf = E / 70000 with E = 210000.
+  EXPECT_DOUBLE_EQ(behavior("contactenergy").tension_limit, 3.);
+  const auto& energy = models.at("contactenergy").steps[0];
+  ASSERT_EQ(energy.contact_prints.size(), 1u);
+  EXPECT_EQ(energy.contact_prints[0].variables, std::vector<std::string>{"CELS"});
+  EXPECT_TRUE(energy.contact_prints[0].totals);
+  EXPECT_EQ(energy.contact_prints[0].after_prints, 2u);  // after *NODE PRINT and *EL PRINT
+  EXPECT_EQ(models.at("cubespring").steps[0].contact_files[0].variables,
+            (std::vector<std::string>{"CDIS", "CSTR"}));
+  EXPECT_EQ(models.at("contact1").surfaces.at("SSLAV").kind, model::Surface::Kind::Nodes);
+  EXPECT_DOUBLE_EQ(*models.at("punch1").contact_pairs[0].adjust_distance, 0.005);
+  EXPECT_FALSE(models.at("punch1").contact_pairs[0].small_sliding);  // ignored for F2F
+  EXPECT_EQ(models.at("punch2").contact_pairs[0].adjust_set, "CONTACT");
+  const auto& sticking = models.at("friction1").steps[0].interaction_friction[0];
+  ASSERT_TRUE(sticking.has_value());
+  EXPECT_DOUBLE_EQ(sticking->mu, 0.2);
+  EXPECT_DOUBLE_EQ(sticking->stick_slope, 47000.);
+  // friction2: *CHANGE FRICTION in step 4 lowers mu from 0.2 to 0.1.
+  const auto& steps = models.at("friction2").steps;
+  ASSERT_EQ(steps.size(), 4u);
+  EXPECT_DOUBLE_EQ(steps[2].interaction_friction[0]->mu, 0.2);
+  EXPECT_DOUBLE_EQ(steps[3].interaction_friction[0]->mu, 0.1);
+  EXPECT_DOUBLE_EQ(steps[3].interaction_friction[0]->stick_slope, 80.);
+  EXPECT_EQ(steps[3].contact_prints[0].frequency, 100);
 }
 
 }  // namespace

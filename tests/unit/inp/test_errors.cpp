@@ -1,18 +1,13 @@
 #include <gtest/gtest.h>
 
-#include "inp/read_deck.hpp"
+#include "bad_deck.hpp"
 #include "deck_fixtures.hpp"
+#include "inp/read_deck.hpp"
 
 namespace kontakt::inp {
 namespace {
 
-struct BadDeck {
-  const char* name;
-  std::string deck;
-  int line;              ///< expected line in bad.inp
-  std::string keyword;   ///< expected keyword
-  std::string fragment;  ///< expected part of the message
-};
+using test::BadDeck;
 
 /// Appends `tail` to the two-cube model: its first line is line 27.
 std::string model_plus(const std::string& tail) { return test::two_cubes_model() + tail; }
@@ -20,8 +15,8 @@ std::string model_plus(const std::string& tail) { return test::two_cubes_model()
 std::vector<BadDeck> bad_decks() {
   const std::string step = "*STEP\n*STATIC\n";
   return {
-      {"unsupported keyword", model_plus("*CONTACT PAIR, INTERACTION=I\nA, B\n"), 27,
-       "*CONTACT PAIR", "keyword not supported"},
+      {"unsupported keyword", model_plus("*TIE, NAME=T\nA, B\n"), 27, "*TIE",
+       "keyword not supported"},
       {"hyperelastic unsupported",
        model_plus("*MATERIAL, NAME=P\n*ELASTIC\n1,0\n*HYPERELASTIC\n1,0\n"), 30,
        "*HYPERELASTIC", "not supported"},
@@ -122,14 +117,17 @@ TEST_P(inpErrors, NamesFileLineAndKeyword) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Malformed, inpErrors, ::testing::ValuesIn(bad_decks()),
-                         [](const ::testing::TestParamInfo<BadDeck>& info) {
-                           std::string name = info.param.name;
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
-                         });
+std::string case_name(const ::testing::TestParamInfo<BadDeck>& info) {
+  std::string name = info.param.name;
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Malformed, inpErrors, ::testing::ValuesIn(bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedContact, inpErrors,
+                         ::testing::ValuesIn(test::contact_bad_decks()), case_name);
 
 }  // namespace
 }  // namespace kontakt::inp

@@ -200,16 +200,17 @@ TEST(inpSteps, PrintRequestsCarryOverUntilReplaced) {
   EXPECT_EQ(p0[1].frequency, 2);  // ccx: the last FREQUENCY applies to all outputs
   ASSERT_EQ(m.steps[0].node_files.size(), 1u);
   ASSERT_EQ(m.steps[0].element_files.size(), 1u);
-  // Step 2: a new *NODE PRINT replaces the node prints; the element print carries over.
+  // Step 2: a new *NODE PRINT replaces the node prints; the element print carries over and,
+  // as in ccx 2.20, now comes first (the new request is appended to ccx's print list).
   const auto& p1 = m.steps[1].prints;
   ASSERT_EQ(p1.size(), 2u);
-  EXPECT_EQ(p1[0].set, "FIX");
-  EXPECT_EQ(p1[0].totals, model::Totals::Only);
-  EXPECT_TRUE(p1[0].global);
-  EXPECT_EQ(p1[1].set, "EALL");
+  EXPECT_EQ(p1[0].set, "EALL");
+  EXPECT_EQ(p1[1].set, "FIX");
+  EXPECT_EQ(p1[1].totals, model::Totals::Only);
+  EXPECT_TRUE(p1[1].global);
   EXPECT_EQ(m.steps[1].node_files.size(), 1u);
   EXPECT_EQ(m.steps[2].prints.size(), 2u);
-  EXPECT_EQ(m.steps[2].prints[0].set, "FIX");
+  EXPECT_EQ(m.steps[2].prints[1].set, "FIX");
 }
 
 TEST(inpSteps, OutputOnlyKeywordsWarn) {

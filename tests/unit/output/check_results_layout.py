@@ -12,7 +12,15 @@ import numpy as np
 
 VTK_TYPES = {10: 4, 24: 10, 12: 8, 25: 20, 13: 6, 26: 15}
 XDMF_NODES = {6: 4, 38: 10, 9: 8, 48: 20, 8: 6, 40: 15}
-NODAL = {"U": 3, "RF": 3, "S": 6, "E": 6, "S_Mises": 1}
+NODAL = {"U": 3, "RF": 3, "S": 6, "E": 6, "S_Mises": 1, "CPRESS": 1, "COPEN": 1, "CSHEAR1": 1,
+         "CSHEAR2": 1, "CSLIP1": 1, "CSLIP2": 1, "CSTATUS": 1}
+# /frames/NNNNNN/contact_points: columns of the contact point table (P rows).
+CONTACT_TABLE = {"pair": (np.int64, 1), "slave_element": (np.int64, 1),
+                 "slave_face": (np.int64, 1), "slave_node": (np.int64, 1),
+                 "status": (np.int64, 1), "xi": (np.float64, 2), "x": (np.float64, 3),
+                 "clearance": (np.float64, 1), "pressure": (np.float64, 1),
+                 "slip": (np.float64, 2), "shear": (np.float64, 2), "area": (np.float64, 1),
+                 "energy": (np.float64, 1)}
 IP = {"S_ip": 6, "E_ip": 6, "ENER_ip": 1, "PEEQ_ip": 1}
 CELL = {"EVOL": 1}
 
@@ -156,6 +164,9 @@ class Checker:
                 self.check(a in g.attrs and np.asarray(g.attrs[a]).dtype.kind == kind,
                            f"/frames/{n}@{a} missing or wrong type")
             for name, ds in g.items():
+                if name == "contact_points":
+                    self.check_contact_points(f, f"frames/{n}/contact_points")
+                    continue
                 if name in NODAL:
                     shape = (self.N,) if NODAL[name] == 1 else (self.N, NODAL[name])
                 elif name in IP:
@@ -166,6 +177,18 @@ class Checker:
                     self.check(False, f"/frames/{n}/{name}: unknown array")
                     continue
                 self.dataset(f, f"frames/{n}/{name}", np.float64, shape)
+
+    def check_contact_points(self, f, path):
+        g = f[path]
+        if not self.check(isinstance(g, h5py.Group), f"/{path}: not a group"):
+            return
+        self.check(set(g) == set(CONTACT_TABLE), f"/{path}: columns {sorted(g)}")
+        rows = g["pressure"].shape[0] if "pressure" in g else None
+        for name, (dtype, width) in CONTACT_TABLE.items():
+            if name in g and rows is not None:
+                self.dataset(f, f"{path}/{name}", dtype, (rows,) if width == 1 else (rows, width))
+        if "status" in g and g["status"].size:
+            self.check(set(np.unique(g["status"][()])) <= {0, 1, 2}, f"/{path}/status not 0/1/2")
 
     def check_history(self, f):
         if "history" not in f:

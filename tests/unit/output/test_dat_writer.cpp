@@ -247,6 +247,163 @@ TEST(DatHeaders, TableIsComplete) {
     EXPECT_EQ(h.front(), ' ');
     EXPECT_TRUE(h.ends_with("for set "));
   }
+  for (auto b : {DatBlock::CDIS_FACE, DatBlock::CSTR_FACE, DatBlock::CELS_FACE,
+                 DatBlock::CDIS_NODE, DatBlock::CSTR_NODE, DatBlock::CELS_NODE}) {
+    const auto h = dat_header_prefix(b);
+    ASSERT_FALSE(h.empty());
+    EXPECT_TRUE(h.ends_with("contact elements and time")) << h;
+  }
+  EXPECT_TRUE(dat_header_prefix(DatBlock::CELS_TOTAL).ends_with("for time "));
+}
+
+// ------------------------------------------------------------------ *CONTACT PRINT
+ContactPointRecord contact_point(int element, int face, int node, Real pressure) {
+  ContactPointRecord p;
+  p.slave_element = element;
+  p.slave_face = face;
+  p.slave_node = node;
+  p.active = true;
+  p.pressure = pressure;
+  p.clearance = -pressure * 1e-7;
+  p.slip = Vec2(1e-6, -2e-6);
+  p.shear = Vec2(0.5, -0.25);
+  p.energy = pressure * 1e-8;
+  return p;
+}
+
+model::ContactRequest contact_print(std::vector<std::string> vars, bool totals = false,
+                                    bool only = false, std::size_t after = 0) {
+  model::ContactRequest r;
+  r.variables = std::move(vars);
+  r.totals = totals;
+  r.totals_only = only;
+  r.after_prints = after;
+  return r;
+}
+
+model::Model with_pair(model::ContactPair::Type type) {
+  auto m = test::two_tets();
+  model::ContactPair pair;
+  pair.type = type;
+  m.contact_pairs.push_back(pair);
+  return m;
+}
+
+// Headers and rows as ccx 2.20 writes them (contactenergy, friction1 and variants of them).
+const char* kGoldenFaces = R"(
+ relative contact displacement (slave element+face,normal,tang1,tang2) for all contact elements and time 0.1500000E+01
+
+         7          1 -3.000000E-05  1.000000E-06 -2.000000E-06
+         8          2 -1.000000E-05  1.000000E-06 -2.000000E-06
+         8          2 -2.000000E-05  1.000000E-06 -2.000000E-06
+
+ contact stress (slave element+face,press,tang1,tang2) for all contact elements and time 0.1500000E+01
+
+         7          1  3.000000E+02  5.000000E-01 -2.500000E-01
+         8          2  1.000000E+02  5.000000E-01 -2.500000E-01
+         8          2  2.000000E+02  5.000000E-01 -2.500000E-01
+
+ contact print energy (slave element+face,energy)for all contact elements and time 0.1500000E+01
+
+         7          1  3.000000E-06
+         8          2  1.000000E-06
+         8          2  2.000000E-06
+
+ total contact spring energy for time  0.1500000E+01
+
+        6.000000E-06
+)";
+
+TEST(DatWriter, ContactPrintSurfaceToSurfaceRowsPerActivePoint) {
+  auto m = with_pair(model::ContactPair::Type::SurfaceToSurface);
+  auto f = two_tet_frame();
+  // Element 8 (internal 1) first in the frame, an inactive point, then element 7: ccx sorts by
+  // element and keeps a face's points in their order.
+  f.contact_points = {contact_point(1, 2, -1, 100), contact_point(0, 1, -1, 999),
+                      contact_point(1, 2, -1, 200), contact_point(0, 1, -1, 300)};
+  f.contact_points[1].active = false;
+  m.steps[0].contact_prints = {contact_print({"CDIS", "CSTR", "CELS"}, true)};
+  const auto path = tmp("contact_faces.dat");
+  {
+    DatWriter w(m, path);
+    w.write(m.steps[0], f);
+  }
+  EXPECT_EQ(slurp(path), kGoldenFaces);
+}
+
+const char* kGoldenNodes = R"(
+ contact print energy (slave node,energy) forall contact elements and time 0.1500000E+01
+
+        20  2.000000E-06
+        40  1.000000E-06
+
+ contact stress (slave node,press,tang1,tang2) for all contact elements and time 0.1500000E+01
+
+        20  2.000000E+02  5.000000E-01 -2.500000E-01
+        40  1.000000E+02  5.000000E-01 -2.500000E-01
+)";
+
+TEST(DatWriter, ContactPrintNodeToSurfaceRowsPerSlaveNode) {
+  auto m = with_pair(model::ContactPair::Type::NodeToSurface);
+  auto f = two_tet_frame();
+  f.contact_points = {contact_point(-1, 0, 3, 100), contact_point(-1, 0, 1, 200)};
+  m.steps[0].contact_prints = {contact_print({"CELS", "CSTR"})};
+  const auto path = tmp("contact_nodes.dat");
+  {
+    DatWriter w(m, path);
+    w.write(m.steps[0], f);
+  }
+  EXPECT_EQ(slurp(path), kGoldenNodes);
+}
+
+TEST(DatWriter, ContactPrintTotalsOnlyAndPlaceAmongPrints) {
+  auto m = with_pair(model::ContactPair::Type::NodeToSurface);
+  auto f = two_tet_frame();
+  f.contact_points = {contact_point(-1, 0, 3, 100)};
+  auto& step = m.steps[0];
+  // ccx's list: U, contact (TOTALS=ONLY: the energy total alone), EVOL, contact.
+  step.prints = {node("FIX", {"U"}), elem("E2", {"EVOL"})};
+  step.contact_prints = {contact_print({"CDIS", "CELS", "CSTR"}, false, true, 1),
+                         contact_print({"CDIS"}, false, false, 2)};
+  const auto path = tmp("contact_order.dat");
+  {
+    DatWriter w(m, path);
+    w.write(step, f);
+  }
+  std::vector<std::string> headers;
+  std::istringstream text(slurp(path));
+  for (std::string line; std::getline(text, line);)
+    if (line.find("time") != std::string::npos) headers.push_back(line.substr(0, 24));
+  EXPECT_EQ(headers, (std::vector<std::string>{" displacements (vx,vy,vz",
+                                               " total contact spring en",
+                                               " volume (element, volume",
+                                               " relative contact displa"}));
+}
+
+TEST(DatWriter, ContactPrintFrequencyAndDecksWithoutPairs) {
+  auto m = with_pair(model::ContactPair::Type::NodeToSurface);
+  auto f = two_tet_frame();
+  f.is_step_end = false;
+  f.increment = 3;
+  f.contact_points = {contact_point(-1, 0, 3, 100)};
+  m.steps[0].contact_prints = {contact_print({"CDIS"})};
+  m.steps[0].contact_prints[0].frequency = 2;
+  const auto path = tmp("contact_freq.dat");
+  {
+    DatWriter w(m, path);
+    w.write(m.steps[0], f);  // increment 3, frequency 2: not due
+    f.increment = 4;
+    w.write(m.steps[0], f);
+  }
+  const std::string text = slurp(path);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4);  // one block, no rows
+  m.contact_pairs.clear();
+  const auto none = tmp("contact_none.dat");
+  {
+    DatWriter w(m, none);
+    w.write(m.steps[0], f);
+  }
+  EXPECT_EQ(slurp(none), "");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -439,6 +440,142 @@ TEST(Hdf5Writer, XdmfSidecar) {
   EXPECT_EQ(std::vector<std::int64_t>(topo.begin() + 11, topo.end()),
             (std::vector<std::int64_t>{1, 6, 5, 3, 4, 7}));
   EXPECT_NE(text.find("Dimensions=\"17\""), std::string::npos);
+}
+
+// ------------------------------------------------------------------ contact
+model::Model with_contact_pair() {
+  auto m = test::two_tets();
+  m.contact_pairs.emplace_back();
+  return m;
+}
+
+/// A frame with nodal contact values on nodes 20 and 30 and three contact points: a sticking
+/// one on element 8 face 2, a sliding one and an open one.
+Frame contact_frame(const model::Model& m, int inc, double t) {
+  Frame f = frame_for(m, inc, t);
+  const int n = m.n_nodes();
+  auto& c = f.contact_nodal;
+  c.CPRESS = VecX::Zero(n);
+  c.COPEN = VecX::Zero(n);
+  c.CSHEAR = MatX::Zero(n, 2);
+  c.CSLIP = MatX::Zero(n, 2);
+  c.CSTATUS = VecX::Zero(n);
+  c.CPRESS(1) = 100;
+  c.COPEN(1) = -1e-5;
+  c.CSHEAR.row(1) << 3, 4;
+  c.CSLIP.row(2) << 5, 6;
+  c.CSTATUS(1) = 1;
+  c.CSTATUS(2) = 2;
+  for (int k = 0; k < 3; ++k) {
+    ContactPointRecord p;
+    p.slave_element = 1;
+    p.slave_face = 2;
+    p.xi = Vec2(0.1 * k, 0.2);
+    p.x = Vec3(1, 2, k);
+    p.active = k < 2;
+    p.sticking = k == 0;
+    p.clearance = k == 2 ? 1e-3 : -1e-5;
+    p.pressure = k == 2 ? 0 : 100;
+    p.shear = Vec2(k, -k);
+    p.area = 0.25;
+    p.energy = 1e-4 * k;
+    f.contact_points.push_back(p);
+  }
+  f.n_active_contact = 2;
+  return f;
+}
+
+TEST(Hdf5Writer, RequestedFieldsWithContact) {
+  auto m = with_contact_pair();
+  EXPECT_EQ(requested_fields(m), (std::set<std::string>{"U", "S", "CDIS", "CSTR", "CELS"}));
+  m.steps[0].contact_files.push_back({{"CELS"}, false, false, 1, 0, {}});
+  EXPECT_EQ(requested_fields(m), (std::set<std::string>{"CELS"}));  // only what is asked
+  m.steps[0].node_files.push_back({{"U"}, 1});
+  EXPECT_EQ(requested_fields(m), (std::set<std::string>{"CELS", "U"}));
+  // Contact file requests count for the frequency too.
+  m.steps[0].node_files[0].frequency = 100;
+  m.steps[0].contact_files[0].frequency = 2;
+  Frame f;
+  f.is_step_end = false;
+  f.increment = 4;
+  EXPECT_TRUE(file_output_due(m.steps[0], f));
+  f.increment = 3;
+  EXPECT_FALSE(file_output_due(m.steps[0], f));
+}
+
+TEST(Hdf5Writer, ContactArraysAndPointTable) {
+  const auto m = with_contact_pair();
+  const auto dir = fresh_dir("contact");
+  {
+    Hdf5Writer w(m, dir, "c", {"U", "CSTR"});
+    w.write(contact_frame(m, 1, 0.5));
+    Frame open = contact_frame(m, 2, 1.0);
+    open.contact_points.clear();  // no points: a table without rows
+    w.write(open);
+    w.finish();
+  }
+  H5File file(dir / "c.hdf");
+  const hid_t f = file.id;
+  for (const char* a : {"CPRESS", "COPEN", "CSHEAR1", "CSHEAR2", "CSLIP1", "CSLIP2", "CSTATUS"}) {
+    EXPECT_EQ(shape(f, std::string("/frames/000001/") + a), (std::vector<hsize_t>{5})) << a;
+    EXPECT_TRUE(same_object(f, std::string("/VTKHDF/PointData/") + a,
+                            std::string("/frames/000002/") + a))
+        << a;
+  }
+  EXPECT_EQ(read_f64(f, "/frames/000001/CPRESS")[1], 100);
+  EXPECT_EQ(read_f64(f, "/frames/000001/CSHEAR2")[1], 4);
+  EXPECT_EQ(read_f64(f, "/frames/000001/CSLIP1")[2], 5);
+  EXPECT_EQ(read_f64(f, "/frames/000001/CSTATUS"), (std::vector<double>{0, 1, 2, 0, 0}));
+  const std::string t = "/frames/000001/contact_points/";
+  EXPECT_EQ(read_i64(f, t + "status"), (std::vector<std::int64_t>{1, 2, 0}));
+  EXPECT_EQ(read_i64(f, t + "slave_element"), (std::vector<std::int64_t>{8, 8, 8}));  // labels
+  EXPECT_EQ(read_i64(f, t + "slave_face"), (std::vector<std::int64_t>{2, 2, 2}));
+  EXPECT_EQ(read_i64(f, t + "slave_node"), (std::vector<std::int64_t>{-1, -1, -1}));
+  EXPECT_EQ(read_i64(f, t + "pair"), (std::vector<std::int64_t>{0, 0, 0}));
+  EXPECT_EQ(shape(f, t + "x"), (std::vector<hsize_t>{3, 3}));
+  EXPECT_EQ(read_f64(f, t + "x")[8], 2.0);
+  EXPECT_EQ(shape(f, t + "xi"), (std::vector<hsize_t>{3, 2}));
+  EXPECT_EQ(read_f64(f, t + "clearance")[2], 1e-3);
+  EXPECT_EQ(read_f64(f, t + "pressure")[0], 100);
+  EXPECT_EQ(read_f64(f, t + "shear")[3], -1);
+  EXPECT_EQ(read_f64(f, t + "area")[1], 0.25);
+  EXPECT_EQ(read_f64(f, t + "energy")[2], 2e-4);
+  EXPECT_EQ(shape(f, "/frames/000002/contact_points/pressure"), (std::vector<hsize_t>{0}));
+
+  std::ifstream main_xdmf(dir / "c.xdmf");
+  std::stringstream main_text;
+  main_text << main_xdmf.rdbuf();
+  EXPECT_NE(main_text.str().find("Name=\"CPRESS\" AttributeType=\"Scalar\" Center=\"Node\""),
+            std::string::npos);
+}
+
+TEST(Hdf5Writer, NoContactDataWithoutContactPairs) {
+  auto m = test::two_tets();  // no pairs: the contact parts of a frame are ignored
+  const auto dir = fresh_dir("nocontact");
+  {
+    Hdf5Writer w(m, dir, "n", {"U", "CDIS", "CSTR", "CELS"});
+    w.write(contact_frame(m, 1, 1.0));
+    w.finish();
+  }
+  H5File f(dir / "n.hdf");
+  EXPECT_FALSE(exists(f.id, "/frames/000001/CPRESS"));
+  EXPECT_FALSE(exists(f.id, "/frames/000001/contact_points"));
+}
+
+/// Writes a contact results file where KONTAKT_CONTACT_LAYOUT_FILE says, for
+/// check_results_layout.py (ctest results_layout_contact); skipped otherwise.
+TEST(Hdf5Writer, ContactLayoutFileForTheChecker) {
+  const char* target = std::getenv("KONTAKT_CONTACT_LAYOUT_FILE");
+  if (target == nullptr) GTEST_SKIP() << "KONTAKT_CONTACT_LAYOUT_FILE not set";
+  const fs::path path(target);
+  fs::create_directories(path.parent_path());
+  const auto m = with_contact_pair();
+  Hdf5Writer w(m, path.parent_path(), path.stem().string(),
+               {"U", "RF", "S", "E", "ENER", "EVOL", "CDIS", "CSTR", "CELS"});
+  w.write(contact_frame(m, 1, 0.5));
+  w.add_increment({1, 1, 1, 3, 0.5, 0.5, 0.5, true});
+  w.finish();
+  EXPECT_TRUE(fs::exists(path));
 }
 
 }  // namespace

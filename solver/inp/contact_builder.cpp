@@ -1,0 +1,165 @@
+#include "inp/contact_builder.hpp"
+
+#include <cstdio>
+#include <set>
+
+namespace kontakt::inp {
+
+namespace {
+
+using Law = model::SurfaceBehavior::Law;
+using PairType = model::ContactPair::Type;
+
+std::string number(Real value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+/// Young's modulus of the first material of the deck: ccx scales its contact defaults with it.
+Real first_young(const DeckState& state, const SourceLoc& where, const std::string& keyword,
+                 const std::string& what) {
+  const auto& materials = state.model.materials;
+  if (materials.empty())
+    throw InputError(where, keyword, what + " needs the first material's Young's modulus; the "
+                                            "deck has no *MATERIAL");
+  if (materials.front().young <= 0)
+    throw InputError(where, keyword, what + " needs the first material's Young's modulus; " +
+                                         materials.front().name + " has no *ELASTIC");
+  return materials.front().young;
+}
+
+std::string default_origin(const DeckState& state) {
+  const model::Material& first = state.model.materials.front();
+  return "E = " + number(first.young) + " of " + first.name + ", the first material";
+}
+
+/// ccx's *SURFACE BEHAVIOR defaults: c0 <= 0 -> 1e-3; LINEAR/TIED K <= 0 -> 50 E; LINEAR
+/// sigma_inf <= 0 -> E / 70000. The warning names the defaults that matter: sigma_inf only
+/// acts in node-to-surface contact.
+void resolve_behavior(DeckState& state, std::size_t index, bool tension_matters) {
+  model::SurfaceBehavior& b = state.model.interactions[index].behavior;
+  const SourceLoc& where = state.raw_interactions[index].behavior_where;
+  if (b.clearance_c0 <= 0) b.clearance_c0 = 1e-3;
+  if (b.law != Law::Linear && b.law != Law::Tied) return;
+  const bool default_k = b.stiffness <= 0;
+  const bool default_tension = b.law == Law::Linear && b.tension_limit <= 0;
+  if (!default_k && !default_tension) return;
+  const Real young = first_young(state, where, "*SURFACE BEHAVIOR", "the default stiffness");
+  std::string used;
+  if (default_k) {
+    b.stiffness = 50 * young;
+    used = "K = 50 E = " + number(b.stiffness);
+  }
+  if (default_tension) {
+    b.tension_limit = young / 70000;
+    if (tension_matters)
+      used += std::string(used.empty() ? "" : ", ") + "sigma_inf = E / 70000 = " +
+              number(b.tension_limit);
+  }
+  if (!used.empty())
+    state.warn(where, "*SURFACE BEHAVIOR",
+               "defaults used: " + used + " (" + default_origin(state) + ")");
+}
+
+void resolve_interaction(DeckState& state, std::size_t index, bool tension_matters) {
+  model::SurfaceInteraction& interaction = state.model.interactions[index];
+  const RawInteraction& raw = state.raw_interactions[index];
+  if (!raw.has_behavior) return;  // an error only when a contact pair uses it
+  resolve_behavior(state, index, tension_matters);
+  if (interaction.friction) resolve_stick_slope(state, raw.friction_where, *interaction.friction);
+  if (interaction.behavior.law == Law::Tied && !interaction.friction)
+    throw InputError(raw.behavior_where, "*SURFACE BEHAVIOR",
+                     "PRESSURE-OVERCLOSURE=TIED needs a *FRICTION card in interaction " +
+                         interaction.name + " (its stick slope is the tangential stiffness)");
+}
+
+const model::Surface& pair_surface(const DeckState& state, const model::ContactPair& pair,
+                                   const std::string& name, const std::string& role) {
+  const auto found = state.model.surfaces.find(name);
+  if (found == state.model.surfaces.end())
+    throw InputError(pair.where, "*CONTACT PAIR", role + " surface " + name + " is not defined");
+  if (found->second.faces.empty() && found->second.nodes.empty())
+    throw InputError(pair.where, "*CONTACT PAIR", role + " surface " + name + " is empty");
+  return found->second;
+}
+
+model::ContactPair resolve_pair(const DeckState& state, const RawContactPair& raw) {
+  model::ContactPair pair = raw.pair;
+  const auto fail_at = [&](const std::string& message) {
+    throw InputError(pair.where, "*CONTACT PAIR", message);
+  };
+  const auto found = state.interaction_index.find(raw.interaction);
+  if (found == state.interaction_index.end())
+    fail_at("surface interaction " + raw.interaction + " is not defined");
+  pair.interaction = found->second;
+  const auto index = static_cast<std::size_t>(found->second);
+  const model::SurfaceInteraction& interaction = state.model.interactions[index];
+  if (!state.raw_interactions[index].has_behavior)
+    throw InputError(interaction.where, "*SURFACE INTERACTION",
+                     "interaction " + interaction.name +
+                         " has no *SURFACE BEHAVIOR, which contact needs");
+
+  const model::Surface& slave = pair_surface(state, pair, pair.slave, "slave");
+  const model::Surface& master = pair_surface(state, pair, pair.master, "master");
+  if (master.kind != model::Surface::Kind::ElementFaces)
+    fail_at("master surface " + pair.master + " must be made of element faces");
+  if (slave.kind == model::Surface::Kind::Nodes) {
+    if (pair.type == PairType::SurfaceToSurface)
+      fail_at("SURFACE TO SURFACE contact needs element faces on the slave side too; " +
+              pair.slave + " is a node surface");
+    if (pair.scheme.kind != model::ContactScheme::Kind::NodeToSurface)
+      fail_at("SCHEME=" + model::contact_scheme_name(pair.scheme) +
+              " integrates over slave faces; slave surface " + pair.slave +
+              " is a node surface");
+  }
+  const model::SurfaceBehavior& behavior = interaction.behavior;
+  if (pair.type == PairType::NodeToSurface && behavior.law == Law::Tied)
+    fail_at("PRESSURE-OVERCLOSURE=TIED (interaction " + interaction.name +
+            ") is only available for SURFACE TO SURFACE contact");
+  if (pair.type == PairType::NodeToSurface && behavior.law == Law::Linear &&
+      behavior.tension_limit < 1e-30)
+    fail_at("NODE TO SURFACE contact with a LINEAR law needs a tension at large clearances "
+            "above 1e-30 (interaction " + interaction.name + ")");
+  if (!pair.adjust_set.empty() && !state.model.node_sets.contains(pair.adjust_set))
+    fail_at("ADJUST node set " + pair.adjust_set + " is not defined");
+  return pair;
+}
+
+void set_step_frictions(DeckState& state) {
+  auto& steps = state.model.steps;
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const auto& changes = state.step_friction_changes[s];
+    auto& friction = steps[s].interaction_friction;
+    friction.clear();
+    for (std::size_t i = 0; i < state.model.interactions.size(); ++i) {
+      const auto changed = changes.find(static_cast<int>(i));
+      friction.push_back(changed != changes.end() ? std::optional(changed->second)
+                                                  : state.model.interactions[i].friction);
+    }
+  }
+}
+
+}  // namespace
+
+void resolve_stick_slope(DeckState& state, const SourceLoc& where, model::Friction& friction) {
+  if (friction.stick_slope > 0) return;
+  friction.stick_slope =
+      first_young(state, where, "*FRICTION", "the default stick slope") / 2;
+  state.warn(where, "*FRICTION", "stick slope not positive: default lambda = E / 2 = " +
+                                     number(friction.stick_slope) + " (" +
+                                     default_origin(state) + ")");
+}
+
+void resolve_contact(DeckState& state) {
+  std::set<std::string> node_to_surface;  // interactions of node-to-surface pairs
+  for (const RawContactPair& raw : state.contact_pairs)
+    if (raw.pair.type == PairType::NodeToSurface) node_to_surface.insert(raw.interaction);
+  for (std::size_t i = 0; i < state.model.interactions.size(); ++i)
+    resolve_interaction(state, i, node_to_surface.contains(state.model.interactions[i].name));
+  for (const RawContactPair& raw : state.contact_pairs)
+    state.model.contact_pairs.push_back(resolve_pair(state, raw));
+  set_step_frictions(state);
+}
+
+}  // namespace kontakt::inp

@@ -1,0 +1,20 @@
+// Malformed decks and what the InputError for each must say; run by test_errors.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace kontakt::inp::test {
+
+struct BadDeck {
+  const char* name;
+  std::string deck;
+  int line;              ///< expected line in bad.inp
+  std::string keyword;   ///< expected keyword
+  std::string fragment;  ///< expected part of the message
+};
+
+/// The contact keywords' cases (test_contact_errors.cpp).
+std::vector<BadDeck> contact_bad_decks();
+
+}  // namespace kontakt::inp::test
