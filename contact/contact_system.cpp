@@ -377,6 +377,28 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
   return overclosure > 0 ? drift / overclosure : 0;
 }
 
+std::vector<bool> ContactSystem::nodes_outside_master(const VecX& u) const {
+  std::vector<char> on_slave(model_.n_nodes(), 0), inside(model_.n_nodes(), 0);
+  for (const Unit& unit : units_) {
+    if (unit.node >= 0) {
+      on_slave[unit.node] = 1;
+      inside[unit.node] |= !unit.points.empty() && unit.points.front().master >= 0;
+      continue;
+    }
+    const UnitGeometry g = geometry(unit, u);
+    std::vector<const FaceGeometry*> c;
+    for (const auto& m : g.masters) c.push_back(&m);
+    const auto& nodes = pairs_[unit.pair].slave.faces[unit.face].nodes;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      on_slave[nodes[i]] = 1;
+      if (!inside[nodes[i]]) inside[nodes[i]] = find_master(g.slave.x.row(i).transpose(), c).candidate >= 0;
+    }
+  }
+  std::vector<bool> outside(model_.n_nodes(), false);
+  for (int n = 0; n < model_.n_nodes(); ++n) outside[n] = on_slave[n] && !inside[n];
+  return outside;
+}
+
 std::vector<output::ContactPointRecord> ContactSystem::records(const VecX& u) const {
   std::vector<output::ContactPointRecord> out;
   for (const Unit& unit : units_) {

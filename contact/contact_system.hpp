@@ -81,6 +81,10 @@ class ContactSystem {
   /// nothing is active). Thesis section 7.1: a large value means the frozen geometry drifted.
   Real frozen_drift(const VecX& u) const;
 
+  /// Per model node: a slave node that projects onto no master face (thesis §4.3.2: such
+  /// nodes get no extrapolated contact values).
+  std::vector<bool> nodes_outside_master(const VecX& u) const;
+
   /// One record per integration point / slave node at the last evaluated state.
   std::vector<output::ContactPointRecord> records(const VecX& u) const;
 

@@ -22,6 +22,7 @@
 #include "analysis/step_loads.hpp"
 #include "analysis/constraint_layout.hpp"
 #include "assembly/assembler.hpp"
+#include "contact/contact_extrapolation.hpp"
 #include "contact/contact_system.hpp"
 #include "core/parallel.hpp"
 #include "element/solid_plastic.hpp"
@@ -430,6 +431,8 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           frame.is_step_end = increments.finished();
           if (!contact.empty()) {
             frame.contact_points = contact.records(u);
+            frame.contact_nodal = contact::contact_nodal_values(model, frame.contact_points,
+                                                                contact.nodes_outside_master(u));
             frame.n_active_contact = contact.n_active();
             max_contact_pressure = contact.max_pressure();
             total_contact_force = contact.total_normal_force();
