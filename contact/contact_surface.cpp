@@ -1,6 +1,7 @@
 #include "contact/contact_surface.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "element/quadrature.hpp"
 
@@ -27,6 +28,35 @@ ContactSurface make_contact_surface(const model::Model& model, const model::Surf
   std::sort(s.nodes.begin(), s.nodes.end());
   s.nodes.erase(std::unique(s.nodes.begin(), s.nodes.end()), s.nodes.end());
   return s;
+}
+
+std::vector<SurfaceFace> exterior_faces_at(const model::Model& model, const std::vector<int>& nodes) {
+  std::vector<char> wanted(model.n_nodes(), 0);
+  for (int n : nodes) wanted[n] = 1;
+  // Faces of the elements at those nodes, keyed by their sorted corner nodes: a face met twice
+  // is shared by two elements, hence interior.
+  std::map<std::vector<int>, std::pair<int, SurfaceFace>> faces;
+  for (std::size_t e = 0; e < model.mesh.elements.size(); ++e) {
+    const auto& el = model.mesh.elements[e];
+    const int n_faces = element::traits(el.type).n_faces;
+    for (int f = 1; f <= n_faces; ++f) {
+      SurfaceFace sf{static_cast<int>(e), f, element::face_topology(el.type, f), el.type, {}};
+      bool touches = false;
+      for (int local : element::face_nodes(el.type, f)) {
+        sf.nodes.push_back(el.nodes[local]);
+        touches |= wanted[el.nodes[local]] != 0;
+      }
+      if (!touches) continue;
+      std::vector<int> key(sf.nodes.begin(), sf.nodes.begin() + (is_triangle(sf.topo) ? 3 : 4));
+      std::sort(key.begin(), key.end());
+      auto [it, fresh] = faces.try_emplace(key, 0, sf);
+      ++it->second.first;
+    }
+  }
+  std::vector<SurfaceFace> out;
+  for (auto& [key, counted] : faces)
+    if (counted.first == 1) out.push_back(std::move(counted.second));
+  return out;
 }
 
 FaceGeometry face_geometry(const SurfaceFace& face, const MatX3& coords, const VecX& u) {

@@ -28,6 +28,10 @@ struct ContactSurface {
 /// The faces of an element-face surface; for a node surface only `nodes` is filled.
 ContactSurface make_contact_surface(const model::Model& model, const model::Surface& surface);
 
+/// The exterior faces (faces of one element only) that contain one of `nodes`: where a
+/// node-based slave surface takes its nodal areas from, as ccx does.
+std::vector<SurfaceFace> exterior_faces_at(const model::Model& model, const std::vector<int>& nodes);
+
 /// Current coordinates of the nodes of `face` (reference coordinates + displacements).
 FaceGeometry face_geometry(const SurfaceFace& face, const MatX3& coords, const VecX& u);
 

@@ -8,7 +8,6 @@
 #include "contact/slave_points.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
-#include "element/quadrature.hpp"
 
 namespace kontakt::contact {
 
@@ -53,11 +52,13 @@ ContactSystem::ContactSystem(const model::Model& model, std::optional<model::Con
       throw InputError(def.where, "*CONTACT PAIR",
                        "scheme " + model::contact_scheme_name(pair.scheme) +
                            " needs an element-face slave surface; " + def.slave + " has nodes only");
-    if (nts && !pair.slave.faces.empty()) {
+    if (nts) {
+      pair.area_faces = pair.slave.faces.empty() ? exterior_faces_at(model, pair.slave.nodes)
+                                                 : pair.slave.faces;
       pair.node_faces.resize(model.n_nodes());
-      for (std::size_t f = 0; f < pair.slave.faces.size(); ++f)
-        for (std::size_t i = 0; i < pair.slave.faces[f].nodes.size(); ++i)
-          pair.node_faces[pair.slave.faces[f].nodes[i]].push_back({int(f), int(i)});
+      for (std::size_t f = 0; f < pair.area_faces.size(); ++f)
+        for (std::size_t i = 0; i < pair.area_faces[f].nodes.size(); ++i)
+          pair.node_faces[pair.area_faces[f].nodes[i]].push_back({int(f), int(i)});
     }
     const int p = static_cast<int>(pairs_.size());
     if (nts) {
@@ -101,9 +102,8 @@ FaceVec ContactSystem::slave_weights(const Unit& unit, const Point& pt) const {
 
 Real ContactSystem::nodal_area(const Pair& pair, int node, const VecX& u) const {
   Real area = 0;
-  if (pair.node_faces.empty()) return 0;
   for (const auto& [f, local] : pair.node_faces[node]) {
-    const FaceGeometry g = face_geometry(pair.slave.faces[f], model_.mesh.coords, u);
+    const FaceGeometry g = face_geometry(pair.area_faces[f], model_.mesh.coords, u);
     area += face_area(g) * nodal_area_weight(g.topo, local);
   }
   return area;
@@ -111,13 +111,10 @@ Real ContactSystem::nodal_area(const Pair& pair, int node, const VecX& u) const 
 
 Real ContactSystem::point_area(const Unit& unit, const Point& pt, const UnitGeometry& g,
                                const VecX& u) const {
+  // Node-to-surface: ccx's nodal share of the faces at the node (for a node-based slave
+  // surface, the exterior faces of the mesh there, as ccx 2.20 computes it).
   if (unit.node < 0) return pt.ref_weight * surface_point(g.slave, pt.xi_s).jacobian;
-  const Pair& pair = pairs_[unit.pair];
-  if (!pair.node_faces.empty()) return nodal_area(pair, unit.node, u);
-  // A nodal slave surface: the area of the master face it is paired with (ccx).
-  if (pt.master < 0) return 0;
-  const FaceGeometry& m = g.masters[pt.master];
-  return surface_point(m, pt.xi_m).jacobian * element::reference_measure(m.topo);
+  return nodal_area(pairs_[unit.pair], unit.node, u);
 }
 
 void ContactSystem::find_candidates(Unit& unit, const VecX& u, const std::vector<AabbTree>& trees,

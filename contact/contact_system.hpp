@@ -116,7 +116,9 @@ class ContactSystem {
     model::ContactScheme scheme;
     model::SurfaceBehavior behavior;
     ContactSurface slave, master;
-    /// node-to-surface with a face slave: (face, local node) of every slave face at each node
+    /// node-to-surface: the faces nodal areas come from (the slave faces, or for a node-based
+    /// slave surface the exterior faces at its nodes) and, per node, (face, local node)
+    std::vector<SurfaceFace> area_faces;
     std::vector<std::vector<std::pair<int, int>>> node_faces;
   };
 

@@ -142,11 +142,6 @@ int run_solve(const SolveArgs& args) {
   try {
     const model::Model model = inp::read_deck(args.deck);
     for (const auto& w : model.warnings) std::fprintf(stderr, "kontakt: warning: %s\n", w.c_str());
-    // The reader and the writers know contact; the drivers do not solve it yet (issue 4).
-    // Refuse rather than return results that silently leave the contact pairs out.
-    if (!model.contact_pairs.empty())
-      throw InputError(model.contact_pairs.front().where, "*CONTACT PAIR",
-                       "contact pairs are read but not solved yet by this build");
     app::ResultWriters writers(model, args.out_dir, job);
     events.add(writers);
     // The results of every converged increment are kept, whatever ends the run.
