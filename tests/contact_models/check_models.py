@@ -67,7 +67,7 @@ def main():
                 failed += 1
                 print(f"{name:20s} {contact_type:20s} FAIL   {problems[0]}")
                 continue
-            deck = os.path.join(work, f"{name}_{'sts' if contact_type == STS else 'nts'}.inp")
+            deck = os.path.join(work, f"{name}_{solvers.deck_suffix(contact_type)}.inp")
             model.with_contact_type(contact_type).write(deck)
             run = solvers.run_ccx(deck, timeout=300)
             passed += run.converged

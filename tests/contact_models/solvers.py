@@ -1,5 +1,6 @@
 """Running ccx 2.20 and `kontakt solve --scheme NAME` on a generated contact deck, the same
-way for both: one child process in its own process group (killed with its children on
+way for both: one child process (under `nice -n 10`, exec'd: the same process) in its own
+process group (killed with its children on
 timeout), wall time and peak resident memory of that child (`ru_maxrss` from wait4, the figure
 /usr/bin/time -v reports), converged or not, and the Newton iterations read from the
 solver's .sta file.
@@ -21,7 +22,12 @@ from dataclasses import dataclass
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "peer"))
 import run_peer  # noqa: E402
 
+# kontakt's contact discretisations (issue 4; l = linear variant, gcN = Gauss-Cut with N
+# points per triangle); ccx's two pair types are the reference columns
+SCHEMES = ("nts", "gauss", "lgauss", "gc1", "gc3", "gc7", "gc12", "lgc1", "lgc3", "lgc7", "lgc12")
+CCX_TYPES = ("NODE TO SURFACE", "SURFACE TO SURFACE")
 DEFAULT_TIMEOUT = 600
+NICENESS = 10  # the machine is shared: both solvers run at the same lowered priority
 
 
 @dataclass
@@ -36,12 +42,22 @@ class Run:
     result_dir: str      # folder holding NAME.dat / .sta (and .frd or .hdf)
 
 
+def contact_type_for(scheme):
+    """The *CONTACT PAIR TYPE a deck solved with --scheme SCHEME is written with: node to
+    surface for nts, surface to surface for every segment scheme."""
+    return "NODE TO SURFACE" if scheme == "nts" else "SURFACE TO SURFACE"
+
+
+def deck_suffix(contact_type):
+    return "nts" if contact_type == "NODE TO SURFACE" else "sts"
+
+
 def timed_run(cmd, cwd, log_path, timeout, env=None):
     """(wall seconds, peak RSS MiB, return code or None on timeout) of one child process."""
     start = time.perf_counter()
     with open(log_path, "w") as log:
-        proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=log, stderr=subprocess.STDOUT,
-                                start_new_session=True)
+        proc = subprocess.Popen(["nice", "-n", str(NICENESS)] + cmd, cwd=cwd, env=env,
+                                stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
         expired = threading.Event()
 
         def kill():
@@ -92,3 +108,33 @@ def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, thread
     increments, iterations = _counts(os.path.join(out_dir, name + ".sta"))
     return Run(f"kontakt --scheme {scheme}" if scheme else "kontakt", rc == 0, status,
                iterations, increments, wall, peak, out_dir)
+
+
+def write_deck(model, folder, contact_type, name="model"):
+    """Writes the TwoBodyModel with the given pair type to FOLDER/nts|sts/NAME.inp."""
+    deck_dir = os.path.join(folder, deck_suffix(contact_type))
+    os.makedirs(deck_dir, exist_ok=True)
+    return model.with_contact_type(contact_type).write(os.path.join(deck_dir, name + ".inp"))
+
+
+def solve(deck_for, folder, column, kontakt=None, timeout=DEFAULT_TIMEOUT):
+    """Run of one column: `column` is a kontakt scheme (needs `kontakt`, the executable) or a
+    ccx pair type (CCX_TYPES); `deck_for` maps a pair type to its deck (write_deck). ccx solves
+    in the deck's folder; kontakt writes into FOLDER/kontakt_SCHEME/."""
+    if column in CCX_TYPES:
+        return run_ccx(deck_for[column], timeout)
+    return run_kontakt(kontakt, deck_for[contact_type_for(column)], column,
+                       os.path.join(folder, "kontakt_" + column), timeout)
+
+
+def columns(schemes, kontakt, ccx_types=CCX_TYPES):
+    """[(label, column)]: kontakt's schemes (when an executable is given), then ccx's types."""
+    return ([(f"kontakt {s}", s) for s in (schemes if kontakt else [])]
+            + [(f"ccx {t.lower()}", t) for t in ccx_types])
+
+
+def add_solver_options(parser, default_schemes):
+    """--kontakt EXE (without it only ccx's columns run) and --schemes NAME ... of a script."""
+    parser.add_argument("--kontakt", help="kontakt executable (without it: the ccx columns only)")
+    parser.add_argument("--schemes", nargs="+", default=list(default_schemes), choices=SCHEMES,
+                        help="kontakt's schemes (default: %(default)s)")
