@@ -23,18 +23,22 @@ done
 name=$(basename "$deck" .inp)
 dir=$(dirname "$deck")
 mkdir -p "$out"
-tmp="$dir/.fake_$name"
+stage=".fake_${name}_$$"  # one per call: callers may solve one deck with several "schemes" at once
+tmp="$dir/$stage"
 sed -E 's/^(\*[Ss][Tt][Aa][Tt][Ii][Cc][^,]*(,[^,]*)*),[ ]*[Ss][Oo][Ll][Vv][Ee][Rr][ ]*=[ ]*[Ii][Tt][Ee][Rr][Aa][Tt][Ii][Vv][Ee][^,]*/\1/' \
   "$deck" > "$tmp.inp"
-(cd "$dir" && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 ccx -i ".fake_$name" > ".fake_$name.log" 2>&1)
+(cd "$dir" && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 ccx -i "$stage" > "$stage.log" 2>&1)
 for ext in dat sta frd; do
   [ -f "$tmp.$ext" ] && cp "$tmp.$ext" "$out/$name.$ext"
 done
-if ! grep -q "Job finished" "$tmp.log"; then
-  if grep -q -e "too many cutbacks" -e "increment size smaller" "$tmp.log"; then
-    echo "fake kontakt: ccx did not converge on $deck (see $tmp.log)" >&2
+log="$out/$name.fake.log"
+mv "$tmp.log" "$log"
+rm -f "$tmp".*
+if ! grep -q "Job finished" "$log"; then
+  if grep -q -e "too many cutbacks" -e "increment size smaller" "$log"; then
+    echo "fake kontakt: ccx did not converge on $deck (see $log)" >&2
     exit 3
   fi
-  echo "fake kontakt: ccx failed on $deck (see $tmp.log)" >&2
+  echo "fake kontakt: ccx failed on $deck (see $log)" >&2
   exit 4
 fi
