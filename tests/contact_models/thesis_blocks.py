@@ -18,7 +18,8 @@ pressure 100 on the upper top. Contact: linear penalty K = 1e7, sigma_inf = 10/p
 table's sigma_inf; it only matters for node to surface), frictionless (the table's mu and
 Lambda belong to its friction runs). Slave: the upper body's bottom (the smaller surface,
 which lies over the master). Step: small strain (no NLGEOM) unless nlgeom=True; *STATIC
-1., 1. (one increment, automatic cutbacks), at most 100 increments.
+1., 1., 1e-5, 1. (one increment, automatic cutbacks down to 1e-5), at most 100
+increments.
 
 Mesh: n x n x n elements per body (default 16, as table 3), C3D8 / C3D20 / C3D20R (any
 meshgen type works; `upper_element` may differ from `element`).

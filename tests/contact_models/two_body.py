@@ -46,7 +46,7 @@ class TwoBodyModel:
     penalty: float = 1e7      # K, pressure per unit overclosure
     tension: float = 1.0      # sigma_inf (ccx: tension at large clearance, node to surface)
     nlgeom: bool = False
-    increment: tuple = (1.0, 1.0)         # *STATIC data line
+    increment: tuple = (1.0, 1.0, 1e-5, 1.0)  # *STATIC: initial, period, minimum, maximum
     max_increments: int = 100             # *STEP, INC=
     fixed: list = field(default_factory=list)      # [(body, nset, first dof, last dof, value)]
     pressures: list = field(default_factory=list)  # [(body, nset, pressure)] on boundary faces
