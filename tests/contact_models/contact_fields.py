@@ -1,8 +1,9 @@
-"""Nodal contact results of a finished run: {node: CPRESS} (and COPEN) from ccx's ASCII .frd
+"""Nodal contact results of a finished run, {node: (COPEN, CPRESS)}, from ccx's ASCII .frd
 (`-4  CONTACT` block: COPEN, CSLIP1, CSLIP2, CPRESS, CSHEAR1, CSHEAR2) or from kontakt's HDF5
 (/frames/NNNNNN/CPRESS and COPEN, indexed like /mesh/node_ids; proto/results_layout.md).
 Both read the last frame / the last CONTACT block. Nodes without contact are reported as 0
 by both solvers."""
+import os
 
 
 def _frd_values(line):
@@ -39,6 +40,15 @@ def hdf5_contact(path):
         last = f["frames"][frames[-1]]
         ids = f["mesh/node_ids"][()]
         return dict(zip((int(i) for i in ids), zip(last["COPEN"][()], last["CPRESS"][()])))
+
+
+def result_file(result_dir, name):
+    """Path of a run's nodal results: kontakt's NAME.hdf, else an NAME.frd (ccx, or the ccx
+    stand-in), else None."""
+    for ext in (".hdf", ".frd"):
+        if os.path.exists(os.path.join(result_dir, name + ext)):
+            return os.path.join(result_dir, name + ext)
+    return None
 
 
 def nodal_contact(result_path):

@@ -68,12 +68,10 @@ def measure(model, level, result_dir, name):
     force = abs(sum(row[2] for row in datfile.find(blocks, "forces").rows))
     load = 2 * force / hertz.element_size(level)
     b, p0 = hertz.closed_form(load)
-    for ext in (".hdf", ".frd"):
-        if os.path.exists(os.path.join(result_dir, name + ext)):
-            nodal = contact_fields.nodal_contact(os.path.join(result_dir, name + ext))
-            break
-    else:
+    path = contact_fields.result_file(result_dir, name)
+    if path is None:
         raise FileNotFoundError(f"{result_dir}: no {name}.hdf or {name}.frd (nodal CPRESS)")
+    nodal = contact_fields.nodal_contact(path)
     offset = model.node_offset("UPPER")
     pairs = [(model.upper.mesh.nodes[n - offset][0], nodal[n][1])
              for n in model.node_set("UPPER", "YMIN") if n in nodal]

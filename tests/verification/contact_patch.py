@@ -30,6 +30,7 @@ Without --kontakt only the ccx columns run (what CI can run before contact lands
                    [--deck DECK.inp ...] [--work DIR] [--no-ccx]
 """
 import argparse
+import math
 import os
 import sys
 
@@ -61,14 +62,6 @@ VARIANTS = {
 }
 
 
-def nodal_results(result_dir, name):
-    """kontakt's NAME.hdf, else an .frd (ccx, or the ccx stand-in), else None."""
-    for ext in (".hdf", ".frd"):
-        if os.path.exists(os.path.join(result_dir, name + ext)):
-            return os.path.join(result_dir, name + ext)
-    return None
-
-
 def measure(result_dir, name):
     """{szz min, szz max, point CPRESS min, max, nodal CPRESS min, max} of a run; nodal values
     over the nodes in contact (CPRESS != 0), None when the run wrote no nodal results."""
@@ -79,7 +72,7 @@ def measure(result_dir, name):
     press = [row[first_value] for row in contact.rows]
     if not szz or not press:
         raise ValueError(f"{name}.dat: no stresses or no contact stress rows")
-    nodal_path = nodal_results(result_dir, name)
+    nodal_path = contact_fields.result_file(result_dir, name)
     nodal = ([p for _, p in contact_fields.nodal_contact(nodal_path).values() if p != 0]
              if nodal_path else [])
     return {"szz": (min(szz), max(szz)), "points": (min(press), max(press)),
@@ -111,7 +104,7 @@ def evaluate(rep, variant, affine, runs):
                                            run.result_dir, name)
     reference = figures.get("ccx surface to surface")
     floor = errors(reference) if reference else (0.0, 0.0)
-    tolerance = tuple(max(TOLERANCE, e) for e in floor)
+    tolerance = tuple(max(TOLERANCE, e) if math.isfinite(e) else TOLERANCE for e in floor)
     rows = []
     for label, what, run, _ in runs:
         limit = None  # (szz, nodal CPRESS) tolerance of a gated row
