@@ -40,6 +40,7 @@ class Run:
     wall: float          # seconds
     peak_mib: float
     result_dir: str      # folder holding NAME.dat / .sta (and .frd or .hdf)
+    message: str = ""    # when not converged: the solver's first error line (or its last line)
 
 
 def contact_type_for(scheme):
@@ -72,6 +73,13 @@ def timed_run(cmd, cwd, log_path, timeout, env=None):
     return wall, usage.ru_maxrss / 1024.0, None if expired.is_set() else proc.returncode
 
 
+def _message(log_path):
+    """The first line of a solver log that mentions an error, else its last non-empty line."""
+    with open(log_path, errors="replace") as f:
+        lines = [ln.strip() for ln in f if ln.strip()]
+    return next((ln for ln in lines if "error" in ln.lower()), lines[-1] if lines else "")
+
+
 def _counts(sta_path):
     return run_peer.sta_counts(sta_path) or (0, 0)
 
@@ -89,7 +97,8 @@ def run_ccx(deck_path, timeout=DEFAULT_TIMEOUT, threads=1):
     status = ("timeout" if rc is None else "converged" if converged
               else "not converged" if rc == 0 or not finished else f"exit {rc}")
     increments, iterations = _counts(os.path.join(folder, name + ".sta"))
-    return Run("ccx", converged, status, iterations, increments, wall, peak, folder)
+    return Run("ccx", converged, status, iterations, increments, wall, peak, folder,
+               "" if converged else _message(log))
 
 
 def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, threads=1):
@@ -102,12 +111,12 @@ def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, thread
     if scheme:
         cmd += ["--scheme", scheme]
     env = dict(os.environ, OPENBLAS_NUM_THREADS=str(threads))
-    wall, peak, rc = timed_run(cmd, out_dir, os.path.join(out_dir, name + ".kontakt.log"),
-                               timeout, env)
+    log = os.path.join(out_dir, name + ".kontakt.log")
+    wall, peak, rc = timed_run(cmd, out_dir, log, timeout, env)
     status = {None: "timeout", 0: "converged", 3: "not converged"}.get(rc, f"exit {rc}")
     increments, iterations = _counts(os.path.join(out_dir, name + ".sta"))
     return Run(f"kontakt --scheme {scheme}" if scheme else "kontakt", rc == 0, status,
-               iterations, increments, wall, peak, out_dir)
+               iterations, increments, wall, peak, out_dir, "" if rc == 0 else _message(log))
 
 
 def write_deck(model, folder, contact_type, name="model"):

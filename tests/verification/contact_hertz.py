@@ -113,7 +113,8 @@ def main():
             for label, column in columns:
                 run = solvers.solve(decks, folder, column, args.kontakt)
                 tag = f"{element} level {level} {label}"
-                rep.check(f"{tag}: converged", run.converged, run.status)
+                rep.check(f"{tag}: converged", run.converged,
+                          f"{run.status} {run.message}".strip())
                 m = run.converged and vutil.guarded(rep, f"{tag}: output", measure, model, level,
                                                     run.result_dir, "hertz")
                 if not m:

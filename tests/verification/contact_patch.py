@@ -98,7 +98,8 @@ def runs_of_variant(args, name, model):
 def evaluate(rep, variant, affine, runs):
     figures = {}
     for label, _, run, name in runs:
-        rep.check(f"{variant} {label}: converged", run.converged, run.status)
+        rep.check(f"{variant} {label}: converged", run.converged,
+                  f"{run.status} {run.message}".strip())
         if run.converged:
             figures[label] = vutil.guarded(rep, f"{variant} {label}: output", measure,
                                            run.result_dir, name)
