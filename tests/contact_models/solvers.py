@@ -1,9 +1,8 @@
 """Running ccx 2.20 and `kontakt solve --scheme NAME` on a generated contact deck, the same
-way for both: one child process (under `nice -n 10`, exec'd: the same process) in its own
-process group (killed with its children on
-timeout), wall time and peak resident memory of that child (`ru_maxrss` from wait4, the figure
-/usr/bin/time -v reports), converged or not, and the Newton iterations read from the
-solver's .sta file.
+way for both: one child process (under `nice -n 10`, which execs it: the same process) in its
+own process group (killed with its children on timeout); wall time and peak resident memory
+of that child (`ru_maxrss` from wait4, the figure /usr/bin/time -v reports), converged or
+not, and the Newton iterations read from the solver's .sta file.
 
 Counting (identical for both solvers): `iterations` is the sum of the ITRS column over every
 attempt in the .sta, cut-back attempts (marked U) included; `increments` counts the converged
@@ -32,7 +31,6 @@ NICENESS = 10  # the machine is shared: both solvers run at the same lowered pri
 
 @dataclass
 class Run:
-    solver: str          # "ccx" or "kontakt --scheme NAME"
     converged: bool
     status: str          # "converged", "not converged", "timeout", "exit N"
     iterations: int      # over every attempt (0 when there is no .sta)
@@ -97,7 +95,7 @@ def run_ccx(deck_path, timeout=DEFAULT_TIMEOUT, threads=1):
     status = ("timeout" if rc is None else "converged" if converged
               else "not converged" if rc == 0 or not finished else f"exit {rc}")
     increments, iterations = _counts(os.path.join(folder, name + ".sta"))
-    return Run("ccx", converged, status, iterations, increments, wall, peak, folder,
+    return Run(converged, status, iterations, increments, wall, peak, folder,
                "" if converged else _message(log))
 
 
@@ -115,8 +113,8 @@ def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, thread
     wall, peak, rc = timed_run(cmd, out_dir, log, timeout, env)
     status = {None: "timeout", 0: "converged", 3: "not converged"}.get(rc, f"exit {rc}")
     increments, iterations = _counts(os.path.join(out_dir, name + ".sta"))
-    return Run(f"kontakt --scheme {scheme}" if scheme else "kontakt", rc == 0, status,
-               iterations, increments, wall, peak, out_dir, "" if rc == 0 else _message(log))
+    return Run(rc == 0, status, iterations, increments, wall, peak, out_dir,
+               "" if rc == 0 else _message(log))
 
 
 def write_deck(model, folder, contact_type, name="model"):
