@@ -21,7 +21,9 @@ A value that is NaN/inf, or a field that is not a number (Fortran's `*****` over
 block's error inf.
 
 For nonlinear runs (common_times_only) only the blocks at times both files printed are
-compared, and the last printed time must agree.
+compared, and the last printed time must agree. For contact runs (final_time_only) only the
+blocks of the last printed time are compared (it must agree); `select` (a predicate on the
+header) keeps only some kinds of block, e.g. the displacements.
 """
 import math
 import re
@@ -93,6 +95,18 @@ def keep_common_times(ours, ref):
             [b for b in ref if block_time(b[0]) in common], problems)
 
 
+def keep_final_time(ours, ref):
+    """Blocks of the last printed time of each file, and a problem when those times differ.
+    Contact runs may take other increments than ccx; only the final state is comparable."""
+    last_o = max((t for t in (block_time(h) for h, _ in ours) if t is not None), default=None)
+    last_r = max((t for t in (block_time(h) for h, _ in ref) if t is not None), default=None)
+    problems = []
+    if ours and ref and last_o != last_r:
+        problems.append(f"last printed time {last_o} where the reference has {last_r}")
+    return ([b for b in ours if block_time(b[0]) == last_o],
+            [b for b in ref if block_time(b[0]) == last_r], problems)
+
+
 @dataclass
 class BlockResult:
     index: int       # 1-based position in the reference
@@ -134,8 +148,9 @@ def _first_key_difference(rows_o, rows_r):
 
 
 def compare_blocks(ours_text, reference_text, tolerance=DEFAULT_TOLERANCE,
-                   common_times_only=False):
-    """Comparison of two .dat texts: per-block errors, structural problems, the worst error."""
+                   common_times_only=False, final_time_only=False, select=None):
+    """Comparison of two .dat texts: per-block errors, structural problems, the worst error.
+    `select(header)`, when given, keeps only the blocks it accepts (applied to both files)."""
     result = Comparison()
     try:
         ours = parse_blocks(ours_text)
@@ -146,6 +161,10 @@ def compare_blocks(ours_text, reference_text, tolerance=DEFAULT_TOLERANCE,
     ref = parse_blocks(reference_text)
     if common_times_only:
         ours, ref, result.problems = keep_common_times(ours, ref)
+    elif final_time_only:
+        ours, ref, result.problems = keep_final_time(ours, ref)
+    if select:
+        ours, ref = [b for b in ours if select(b[0])], [b for b in ref if select(b[0])]
     if len(ours) != len(ref):
         what = "missing" if len(ours) < len(ref) else "extra"
         n = min(len(ours), len(ref))

@@ -25,9 +25,22 @@ the FIRST check a deck breaks is its exclusion reason:
 The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same rule except
 that it requires a *STEP with NLGEOM instead of forbidding it, and excludes C3D8I.
 
+The contact peer set (`contact=True`, run_peer.py --contact): frictionless penalty contact.
+The same rule, with NLGEOM allowed (not required; C3D8I excluded, the solver has no nonlinear
+C3D8I), the keywords of CONTACT_KEYWORDS admitted, and:
+  - *CONTACT PAIR: TYPE= NODE TO SURFACE or SURFACE TO SURFACE (not MORTAR and its kin);
+  - *SURFACE BEHAVIOR: PRESSURE-OVERCLOSURE= LINEAR, EXPONENTIAL, TABULAR or HARD (not TIED:
+    tied contact comes with friction, later);
+  - *CONTACT PRINT / FILE / OUTPUT: variables from CONTACT_VARIABLES (CDIS, CSTR, CELS) only,
+    by their first four characters as ccx reads them (CDISP, CSTRESS);
+  - *FRICTION, *CHANGE FRICTION, *CHANGE SURFACE BEHAVIOR and *MODEL CHANGE stay unsupported
+    keywords (frictionless decks with one fixed set of pairs);
+  - the deck has at least one *CONTACT PAIR.
+
 Usable as a module (`exclusion_reason`, `qualifying_decks`, `element_types`, `read_text`,
 `included_files`) and as a CLI:
-    select_decks.py [--suite DIR] [--nlgeom]   excluded decks with reasons, grouped counts,
+    select_decks.py [--suite DIR] [--nlgeom | --contact]
+                                               excluded decks with reasons, grouped counts,
                                                then the qualifying names
     select_decks.py --list                     only the qualifying names, one per line
 """
@@ -48,6 +61,11 @@ SUPPORTED_KEYWORDS = {
     "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT", "CONTROLS",
 }
 FORBIDDEN_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
+CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
+                    "CONTACT FILE", "CONTACT OUTPUT"}
+CONTACT_TYPES = {"NODE TO SURFACE", "SURFACE TO SURFACE"}
+PRESSURE_OVERCLOSURES = {"LINEAR", "EXPONENTIAL", "TABULAR", "HARD"}
+CONTACT_VARIABLES = {"CDIS", "CSTR", "CELS"}
 NODE_PRINT_VARIABLES = {"U", "RF"}
 EL_PRINT_VARIABLES = {"S", "E", "EVOL", "ENER", "ELSE"}
 
@@ -136,24 +154,49 @@ def element_types(path):
 
 # ----------------------------------------------------------------------------------- the rule
 
-def exclusion_reason(path, nlgeom=False):
+def _contact_limit(keyword, params, data):
+    """The contact set's limit a contact keyword breaks, or None."""
+    if keyword == "CONTACT PAIR":
+        kind = _normalise(params.get("TYPE", ""))
+        if kind not in CONTACT_TYPES:
+            return f"*CONTACT PAIR, TYPE={kind or '(none)'}"
+    elif keyword == "SURFACE BEHAVIOR":
+        law = _normalise(params.get("PRESSURE-OVERCLOSURE", ""))
+        if law not in PRESSURE_OVERCLOSURES:
+            return f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE={law or '(none)'}"
+    elif keyword in ("CONTACT PRINT", "CONTACT FILE", "CONTACT OUTPUT"):
+        for line in data:
+            for var in (_normalise(v) for v in line.split(",")):
+                if var and var[:4] not in CONTACT_VARIABLES:  # ccx reads 4 characters (CDISP)
+                    return f"*{keyword} of {var}"
+    return None
+
+
+def exclusion_reason(path, nlgeom=False, contact=False):
     """THE qualification rule (see the module docstring): None when the deck at `path`
     qualifies, otherwise a short text naming the first check it breaks."""
     try:
         recs = list(records(path))
     except (OSError, UnicodeError) as e:
         return f"unreadable: {e}"
-    prints, has_nlgeom = 0, False
+    prints, has_nlgeom, pairs = 0, False, 0
+    keywords = SUPPORTED_KEYWORDS | (CONTACT_KEYWORDS if contact else set())
     for keyword, params, data in recs:
         if keyword == "ELEMENT":  # (a)
             etype = params.get("TYPE", "").upper()
             if etype not in ELEMENT_TYPES:
                 return f"element {etype or '(no TYPE)'}"
-            if nlgeom and etype == "C3D8I":
-                return "C3D8I under NLGEOM"
+            if (nlgeom or contact) and etype == "C3D8I":
+                return "C3D8I under NLGEOM" if nlgeom else "C3D8I in the contact set"
             continue
-        if keyword not in SUPPORTED_KEYWORDS:  # (b)
+        if keyword not in keywords:  # (b)
             return f"keyword *{keyword}"
+        if keyword in CONTACT_KEYWORDS:
+            limit = _contact_limit(keyword, params, data)
+            if limit:
+                return limit
+            pairs += keyword == "CONTACT PAIR"
+            continue
         forbidden = FORBIDDEN_PARAMETERS.intersection(params)
         if forbidden:
             return f"*{keyword}, {sorted(forbidden)[0]}"
@@ -181,7 +224,7 @@ def exclusion_reason(path, nlgeom=False):
         elif keyword == "STEP":
             flag = params.get("NLGEOM")
             if flag is not None and flag.upper() != "NO":
-                if not nlgeom:
+                if not (nlgeom or contact):
                     return "*STEP, NLGEOM"
                 has_nlgeom = True
             if "PERTURBATION" in params:
@@ -197,14 +240,16 @@ def exclusion_reason(path, nlgeom=False):
         return "no *NODE PRINT / *EL PRINT"
     if nlgeom and not has_nlgeom:
         return "no NLGEOM step"
+    if contact and not pairs:
+        return "no *CONTACT PAIR"
     return None
 
 
-def qualifying_decks(folder, nlgeom=False):
+def qualifying_decks(folder, nlgeom=False, contact=False):
     """(qualifying names, {excluded name: reason}) over every deck in the folder."""
     good, excluded = [], {}
     for name in deck_names(folder):
-        reason = exclusion_reason(deck_path(folder, name), nlgeom)
+        reason = exclusion_reason(deck_path(folder, name), nlgeom, contact)
         if reason is None:
             good.append(name)
         else:
@@ -216,12 +261,13 @@ def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--suite", default=DEFAULT_SUITE, help="deck folder (default: %(default)s)")
     p.add_argument("--nlgeom", action="store_true", help="the nonlinear set instead")
+    p.add_argument("--contact", action="store_true", help="the frictionless contact set instead")
     p.add_argument("--list", action="store_true", help="print only the qualifying names")
     a = p.parse_args(argv)
     if not os.path.isdir(a.suite):
         print(f"deck folder not found: {a.suite} (install calculix-ccx-test)", file=sys.stderr)
         return 1
-    good, excluded = qualifying_decks(a.suite, a.nlgeom)
+    good, excluded = qualifying_decks(a.suite, a.nlgeom, a.contact)
     if a.list:
         print("\n".join(good))
         return 0

@@ -61,6 +61,23 @@ class CompareDat(unittest.TestCase):
         self.assertEqual(worst, float("inf"))
         self.assertIn("last printed time", problems[0])
 
+    def test_final_time_only_compares_the_last_printed_state(self):
+        half = REF.replace("0.1000000E+01", "0.5000000E+00")
+        worse_half = half.replace("1.000000E+02", "9.000000E+01")
+        r = compare_blocks(worse_half + REF, half + half.replace("0.5000000E+00", "0.7500000E+00")
+                           + REF, final_time_only=True)
+        self.assertEqual((r.worst, r.problems), (0.0, []))
+        r = compare_blocks(half, REF, final_time_only=True)
+        self.assertFalse(r.passed)
+        self.assertIn("last printed time", r.problems[0])
+
+    def test_select_keeps_only_accepted_blocks(self):
+        ours = REF.replace("1.000000E+02", "2.000000E+02")
+        displacements = compare_blocks(ours, REF, select=lambda h: h.startswith("displacements"))
+        self.assertEqual([b.index for b in displacements.blocks], [1])
+        self.assertTrue(displacements.passed)
+        self.assertFalse(compare_blocks(ours, REF).passed)
+
     def test_per_block_errors_and_worst(self):
         ours = REF.replace("1.000000E+02", "1.000100E+02").replace("-1.000000E+00", "-1.000010E+00")
         r = compare_blocks(ours, REF)

@@ -96,6 +96,34 @@ class SelectDecks(unittest.TestCase):
         good, _ = qualifying_decks(self.dir, nlgeom=True)
         self.assertEqual(good, ["nl"])
 
+    def test_contact_set(self):
+        contact = GOOD.replace("*STEP\n", """*SURFACE, NAME=S1
+EALL, S1
+*SURFACE, NAME=S2
+EALL, S2
+*SURFACE INTERACTION, NAME=SI
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR
+1e7, 3.
+*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE
+S1, S2
+*STEP, NLGEOM
+""", 1).replace("*END STEP", "*CONTACT PRINT\nCSTR, CDISP\n*END STEP")
+        self.assertEqual(exclusion_reason(self.deck(contact)), "keyword *SURFACE INTERACTION")
+        self.assertIsNone(exclusion_reason(self.deck(contact), contact=True))
+        self.assertEqual(exclusion_reason(self.deck(GOOD), contact=True), "no *CONTACT PAIR")
+        cases = {
+            ("TYPE=SURFACE TO SURFACE", "TYPE=MORTAR"): "*CONTACT PAIR, TYPE=MORTAR",
+            ("=LINEAR", "=TIED"): "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED",
+            ("CSTR, CDISP", "CSTR, CNUM"): "*CONTACT PRINT of CNUM",
+            ("1e7, 3.\n", "1e7, 3.\n*FRICTION\n0.2\n"): "keyword *FRICTION",
+            ("TYPE=C3D8,", "TYPE=C3D8I,"): "C3D8I in the contact set",
+        }
+        for (old, new), reason in cases.items():
+            with self.subTest(reason=reason):
+                self.assertIn(old, contact)
+                self.assertEqual(exclusion_reason(self.deck(contact.replace(old, new, 1)),
+                                                  contact=True), reason)
+
 
 if __name__ == "__main__":
     unittest.main()

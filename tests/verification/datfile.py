@@ -8,6 +8,9 @@ Layout (one block):
              5  3.584580E-05  8.489796E-06  8.536961E-05      (I10, 1X,E13.6 ...)
 stresses rows carry element (I10) and integration point (I4) first;
 "total force" rows carry only values.
+*CONTACT PRINT blocks (`contact stress (slave element+face,press,tang1,tang2) for all contact
+elements and time ...`) have set "contact elements"; their rows carry the slave node, or
+(surface to surface) the slave element and face, first.
 
 parse(path) -> list of Block(kind, header, set, time, rows)
   kind : first word(s) of the header before '(' e.g. 'displacements',
@@ -20,7 +23,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-_HDR = re.compile(r"^\s*(?P<kind>[^()]*?)\s*\((?P<cols>[^)]*)\)\s*for set\s+(?P<set>\S+)"
+_HDR = re.compile(r"^\s*(?P<kind>[^()]*?)\s*\((?P<cols>[^)]*)\)\s*"
+                  r"for (?:set\s+(?P<set>\S+)|all (?P<contact>contact elements))"
                   r"\s+and time\s+(?P<time>\S+)")
 
 # number of leading integer columns per block kind
@@ -68,7 +72,8 @@ def parse(path) -> list[Block]:
             m = _HDR.match(line)
             if m:
                 kind = m.group("kind").strip()
-                cur = Block(kind=kind, columns=m.group("cols"), set=m.group("set"),
+                cur = Block(kind=kind, columns=m.group("cols"),
+                            set=m.group("set") or m.group("contact"),
                             time=_float(m.group("time")), header=line.rstrip("\n"))
                 blocks.append(cur)
                 continue
@@ -77,6 +82,8 @@ def parse(path) -> list[Block]:
             toks = s.split()
             try:
                 nint = 0 if cur.kind.startswith("total") else _NINT.get(cur.kind, 1)
+                if cur.columns.startswith("slave element+face"):
+                    nint = 2
                 ints = tuple(int(t) for t in toks[:nint])
                 vals = tuple(_float(t) for t in toks[nint:])
             except ValueError:

@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+"""Contact benchmark (issue 4): kontakt against ccx 2.20 in one run, side by side, on
+  hueeber1  the suite's deck (read at run time from the installed calculix-ccx-test suite,
+            never copied): two blocks, 8500 C3D8, surface to surface, K = 1e15;
+  cube      the thesis cube (tests/contact_models/thesis_blocks.py, table 3) with 16 x 16 x 16
+            C3D8 per body (--n; --element C3D20 for the quadratic one), centred, not rotated,
+            surface to surface.
+For each: wall time, peak resident memory (ru_maxrss of the child, what /usr/bin/time -v
+reports), converged increments and Newton iterations (from the .sta files, every attempt
+counted), the ratios kontakt/ccx, and the agreement of the final displacements
+(max |u_kontakt - u_ccx| / max |u_ccx| over the final displacement blocks of the .dat, the
+peer contact measure); above 1e-2 the exit code is 1. kontakt runs its default scheme (lgc7
+for surface to surface) unless --scheme is given.
+
+Threads: both get --threads N (default 2): ccx through OMP_NUM_THREADS and
+CCX_NPROC_EQUATION_SOLVER, kontakt through --threads. Machines are noisy: compare the ratios
+of one run, not absolute times across runs.
+
+  bench_contact.py --kontakt build/solver/app/kontakt [--n 16] [--element C3D8] [--work DIR]
+  bench_contact.py --kontakt ... --smoke     # CI: hueeber1 and an 6^3 cube
+"""
+import argparse
+import os
+import sys
+
+sys.dont_write_bytecode = True  # keep the source tree clean
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "contact_models"))
+import solvers  # noqa: E402
+import thesis_blocks  # noqa: E402
+from solvers import run_peer  # noqa: E402
+
+SMOKE_N = 6
+AGREEMENT = 1e-2
+
+
+def displacement_agreement(ours_dat, ccx_dat):
+    """Worst relative difference of the final displacement blocks (inf when not comparable)."""
+    with open(ours_dat, errors="replace") as f, open(ccx_dat) as g:
+        result, _ = run_peer.compare_contact(f.read(), g.read(), AGREEMENT)
+    return result.worst
+
+
+def bench_case(name, deck, args):
+    """Both solvers on one deck: (ccx Run, kontakt Run, agreement or None)."""
+    ccx = solvers.run_ccx(deck, args.timeout, args.threads)
+    ours = solvers.run_kontakt(args.kontakt, deck, args.scheme,
+                               os.path.join(os.path.dirname(deck), "kontakt"), args.timeout,
+                               args.threads)
+    agreement = None
+    if ccx.converged and ours.converged:
+        agreement = displacement_agreement(os.path.join(ours.result_dir, name + ".dat"),
+                                           os.path.join(ccx.result_dir, name + ".dat"))
+    return ccx, ours, agreement
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--kontakt", required=True)
+    p.add_argument("--scheme", choices=solvers.SCHEMES, help="default: kontakt's default")
+    p.add_argument("--n", type=int, default=16, help="cube: elements per direction and body")
+    p.add_argument("--element", default="C3D8", choices=("C3D8", "C3D20", "C3D20R"))
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--timeout", type=int, default=3600)
+    p.add_argument("--suite", default=run_peer.DEFAULT_SUITE)
+    p.add_argument("--smoke", action="store_true", help=f"CI size: cube {SMOKE_N}^3")
+    p.add_argument("--work", default="bench_contact_work")
+    args = p.parse_args()
+    n = SMOKE_N if args.smoke else args.n
+    work = os.path.abspath(args.work)
+    run_peer.stage_deck(args.suite, "hueeber1", os.path.join(work, "hueeber1"))
+    cube = thesis_blocks.cube(args.element, n=n)
+    cube_name = f"cube_{args.element.lower()}_{n}"
+    cases = [("hueeber1", os.path.join(work, "hueeber1", "hueeber1.inp")),
+             (cube_name, solvers.write_deck(cube, os.path.join(work, "cube"),
+                                            "SURFACE TO SURFACE", cube_name))]
+    print(f"threads: {args.threads} for both; kontakt scheme: {args.scheme or 'default'}")
+    print(f"{'case':18s} {'solver':8s} {'status':14s} {'wall s':>8s} {'peak MiB':>9s} "
+          f"{'increments':>10s} {'iterations':>10s}")
+    ok = True
+    for name, deck in cases:
+        ccx, ours, agreement = bench_case(name, deck, args)
+        for label, run in (("ccx", ccx), ("kontakt", ours)):
+            print(f"{name:18s} {label:8s} {run.status:14s} {run.wall:8.2f} {run.peak_mib:9.0f} "
+                  f"{run.increments:10d} {run.iterations:10d}")
+        if agreement is None:
+            print(f"{name:18s} not compared: a solver did not converge")
+            ok = False
+            continue
+        print(f"{name:18s} ratios kontakt/ccx: wall {ours.wall / ccx.wall:.3f}, memory "
+              f"{ours.peak_mib / ccx.peak_mib:.3f}, iterations "
+              f"{ours.iterations / max(ccx.iterations, 1):.3f}; final displacements differ by "
+              f"{agreement:.2e}")
+        ok &= agreement <= AGREEMENT
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
