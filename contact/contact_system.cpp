@@ -156,11 +156,12 @@ void ContactSystem::build_points(Unit& unit, const VecX& u) const {
   }
   // Initial overlaps are ramped out over the rest of step 1 (ccx: face-to-face re-ramps at
   // every increment, node-to-face over the first increment only). Face-to-face also closes
-  // gaps below 1/K (a length numerically) there: meshes of touching curved bodies are not
-  // quite touching at every point.
+  // initial gaps below 1/K (a length numerically) in the first increment: meshes of touching
+  // bodies are not quite touching at every point. Later increments see the real gaps, so a
+  // redone or split increment does not carry that offset into the final state.
   const bool ramp = ctx_.step == 1 && (pair.scheme.kind != Kind::NodeToSurface || ctx_.increment == 1);
-  const bool close_gaps = ctx_.step == 1 && pair.scheme.kind != Kind::NodeToSurface &&
-                          pair.behavior.stiffness > 0;
+  const bool close_gaps = ctx_.step == 1 && ctx_.increment == 1 &&
+                          pair.scheme.kind != Kind::NodeToSurface && pair.behavior.stiffness > 0;
   const Real theta = ctx_.fraction_start;
   for (Point& pt : unit.points) {
     pt.overlap0 = pt.closure = 0;

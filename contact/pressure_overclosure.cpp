@@ -41,7 +41,8 @@ PressureResponse pressure_overclosure(const PressureLaw& law, Real d) {
   const Real K = law.stiffness;
   switch (law.kind) {
     case PressureLaw::Kind::Linear:
-      if (d > 0) r = {K * d, K, 0.5 * K * d * d};
+      // Touching (d = 0) counts as contact: no force yet, but the penalty stiffness.
+      if (d >= 0) r = {K * d, K, 0.5 * K * d * d};
       return r;
     case PressureLaw::Kind::Tied: return {K * d, K, 0.5 * K * d * d};
     case PressureLaw::Kind::QuasiBilinear: {

@@ -45,7 +45,7 @@ void MonitorFiles::on_event(const analysis::Event& e) {
     // .cvg: 4(I6),I9,4(2X,E10.4): contact elements, residual and correction in %, then the
     // thermal columns (no thermal field here).
     cvg_ << fixed_int(e.step, 6) << fixed_int(e.increment, 6) << fixed_int(e.attempt, 6)
-         << fixed_int(e.iteration, 6) << fixed_int(0, 9);
+         << fixed_int(e.iteration, 6) << fixed_int(std::max(e.contact_elements, 0), 9);
     for (Real v : {std::max<Real>(e.residual, 0), std::max<Real>(e.correction, 0), 0.0, 0.0})
       cvg_ << "  " << output::fortran_e(v, 10, 4, 0);
     cvg_ << '\n';
