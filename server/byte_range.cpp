@@ -34,8 +34,9 @@ RangeResult parse_byte_range(const std::optional<std::string>& header, std::uint
   }
   const auto a = parse_number(first);
   const auto b = last.empty() ? std::optional<std::uint64_t>(size ? size - 1 : 0) : parse_number(last);
-  if (!a || !b || *b < *a) return RangeResult::Whole;
+  if (!a || !b) return RangeResult::Whole;
   if (*a >= size) return RangeResult::Unsatisfiable;
+  if (*b < *a) return RangeResult::Whole;
   range.offset = *a;
   range.length = std::min(*b, size - 1) - *a + 1;
   return RangeResult::Partial;

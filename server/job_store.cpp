@@ -365,7 +365,7 @@ std::int64_t JobStore::append_event(const std::string& id, const std::string& ki
                                     const std::string& data,
                                     const std::optional<JobProgress>& progress) {
   std::lock_guard lock(writer_mutex_);
-  WriteTransaction tx(writer_);
+  WriteTransaction tx(writer_, Durability::Flushed);  // one per solver event: no fsync each
   const std::int64_t seq = insert_event(writer_, id, kind, data);
   Statement st(writer_, "UPDATE jobs SET updated_ms = ?, progress = coalesce(?, progress) "
                         "WHERE id = ?");

@@ -22,9 +22,8 @@ SqliteDb::SqliteDb(const std::filesystem::path& file) {
     throw StoreError("cannot open " + file.string() + ": " + why);
   }
   sqlite3_busy_timeout(db_, kBusyTimeoutMs);
-  // WAL lets readers run beside the one writer; synchronous=FULL makes every commit durable
-  // before the API answers (a 201 is never lost, even to a power cut).
-  exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+  // WAL lets readers run beside the one writer.
+  exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL; PRAGMA foreign_keys=ON;");
 }
 
 SqliteDb::~SqliteDb() { sqlite3_close(db_); }
@@ -102,14 +101,19 @@ bool Statement::is_null(int column) const {
   return sqlite3_column_type(stmt_, column) == SQLITE_NULL;
 }
 
-WriteTransaction::WriteTransaction(SqliteDb& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }
+WriteTransaction::WriteTransaction(SqliteDb& db, Durability durability)
+    : db_(db), durability_(durability) {
+  // The pragma cannot change inside a transaction; the fsync at COMMIT also covers the WAL
+  // frames of earlier Flushed commits.
+  if (durability_ == Durability::Synced) db_.exec("PRAGMA synchronous=FULL");
+  db_.exec("BEGIN IMMEDIATE");
+}
 
 WriteTransaction::~WriteTransaction() {
-  if (!done_) {
-    try {
-      db_.exec("ROLLBACK");
-    } catch (const StoreError&) {  // nothing more to do: the connection reports it next time
-    }
+  try {
+    if (!done_) db_.exec("ROLLBACK");
+    if (durability_ == Durability::Synced) db_.exec("PRAGMA synchronous=NORMAL");
+  } catch (const StoreError&) {  // nothing more to do: the connection reports it next time
   }
 }
 

@@ -20,7 +20,8 @@ class StoreError : public std::runtime_error {
 
 class SqliteDb {
  public:
-  /// Opens (creating) the file in WAL mode with a busy timeout and foreign keys on.
+  /// Opens (creating) the file in WAL mode with a busy timeout, foreign keys on and
+  /// synchronous=NORMAL (transactions ask for more: Durability).
   explicit SqliteDb(const std::filesystem::path& file);
   ~SqliteDb();
   SqliteDb(const SqliteDb&) = delete;
@@ -66,11 +67,18 @@ class Statement {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
+/// How a commit survives an OS crash or power cut. Both survive the process being killed: in
+/// WAL mode a commit is in the OS's hands before COMMIT returns.
+enum class Durability {
+  Flushed,  ///< synchronous=NORMAL: the last commits may be lost to a power cut (progress events)
+  Synced,   ///< synchronous=FULL: fsync before COMMIT returns (jobs, status changes)
+};
+
 /// BEGIN IMMEDIATE on construction (takes the write lock up front, so a transaction never has
 /// to upgrade from reading and hit SQLITE_BUSY), ROLLBACK unless commit() was called.
 class WriteTransaction {
  public:
-  explicit WriteTransaction(SqliteDb& db);
+  explicit WriteTransaction(SqliteDb& db, Durability durability = Durability::Synced);
   ~WriteTransaction();
   WriteTransaction(const WriteTransaction&) = delete;
   WriteTransaction& operator=(const WriteTransaction&) = delete;
@@ -78,6 +86,7 @@ class WriteTransaction {
 
  private:
   SqliteDb& db_;
+  Durability durability_;
   bool done_ = false;
 };
 
