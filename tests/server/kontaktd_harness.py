@@ -29,7 +29,7 @@ class Daemon:
         self.log_path = os.path.join(self.data_dir, "daemon.log")
 
     def start(self):
-        log = open(self.log_path, "a")
+        log = self._log = open(self.log_path, "a")
         env = dict(os.environ, **(self.env or {}))
         self.proc = subprocess.Popen(
             [self.exe, "--port", "0", "--data-dir", self.data_dir] + self.args,
@@ -48,7 +48,12 @@ class Daemon:
             raise RuntimeError("kontaktd did not start in time")
         # Keep draining stdout so the daemon never blocks on a full pipe.
         self._pump = subprocess.Popen(["cat"], stdin=self.proc.stdout, stdout=log)
+        self.proc.stdout.close()
         return self
+
+    def _reap(self):
+        self._pump.wait(timeout=10)
+        self._log.close()
 
     def log(self):
         with open(self.log_path) as f:
@@ -57,11 +62,14 @@ class Daemon:
     def kill9(self):
         os.killpg(self.proc.pid, signal.SIGKILL)
         self.proc.wait(timeout=10)
+        self._reap()
 
     def terminate(self, timeout=30):
         """SIGTERM and wait; returns the exit code."""
         self.proc.send_signal(signal.SIGTERM)
-        return self.proc.wait(timeout=timeout)
+        code = self.proc.wait(timeout=timeout)
+        self._reap()
+        return code
 
     def stop(self):
         if self.proc and self.proc.poll() is None:
