@@ -47,6 +47,12 @@ class ApiError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The daemon refused the deck (422 input_error): the message lists file:line: keyword: ...
+class DeckRejected : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 std::string env_or(const char* name, const std::string& fallback) {
   const char* v = std::getenv(name);
   return v && *v ? v : fallback;
@@ -134,6 +140,12 @@ std::string percent_encode(const std::string& s) {
 /// The JSON body of a 2xx reply; throws ApiError with the problem detail otherwise.
 json expect_json(const HttpReply& reply) {
   const json body = json::parse(reply.body, nullptr, false);
+  if (reply.status == 422 && body.is_object() && body.value("code", "") == "input_error") {
+    std::string lines;
+    for (const json& e : body.value("errors", json::array())) lines += e.value("message", "") + "\n";
+    if (!lines.empty()) lines.pop_back();
+    throw DeckRejected(lines.empty() ? body.value("detail", "") : lines);
+  }
   if (reply.status >= 300) {
     std::string detail = body.is_object() ? body.value("detail", "") : "";
     if (detail.empty()) detail = reply.body.substr(0, 200);
@@ -372,8 +384,9 @@ void print_client_usage(std::FILE* out) {
       "  kontakt cancel ID            cancel (idempotent)\n"
       "  kontakt fetch ID [NAME...] [-o DIR]  download results, sha256-checked\n"
       "  kontakt list [--status S[,S]] [--label k=v] [--limit N]\n"
-      "  exit codes of wait and submit --wait: 0 succeeded, 2 input error, 3 not converged,\n"
-      "  4 failed otherwise, 5 canceled, 6 daemon unreachable or request refused, 7 timeout\n",
+      "  exit codes of wait and submit --wait: 0 succeeded, 2 input error (also when submit is\n"
+      "  refused for a bad deck), 3 not converged, 4 failed otherwise, 5 canceled, 6 daemon\n"
+      "  unreachable or request refused, 7 timeout; other commands: 0, 1 usage, 6\n",
       out);
 }
 
@@ -392,6 +405,9 @@ int client_command(int argc, char** argv) {
   } catch (const UsageError& e) {
     std::fprintf(stderr, "kontakt %s: %s\n", command.c_str(), e.what());
     return kUsage;
+  } catch (const DeckRejected& e) {
+    std::fprintf(stderr, "kontakt %s: the deck was refused:\n%s\n", command.c_str(), e.what());
+    return kInputError;
   } catch (const std::exception& e) {  // TransportError, ApiError, a malformed reply
     std::fprintf(stderr, "kontakt %s: %s\n", command.c_str(), e.what());
     return kTransport;
