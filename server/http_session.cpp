@@ -15,7 +15,7 @@ namespace kontakt::server {
 
 namespace {
 
-constexpr auto kStreamPoll = std::chrono::milliseconds(50);
+constexpr auto kStreamPoll = std::chrono::milliseconds(20);  // an atomic read when idle
 constexpr auto kStreamKeepAlive = std::chrono::seconds(15);
 constexpr int kEventsPerWrite = 500;
 

@@ -102,6 +102,8 @@ const std::vector<Option>& options() {
        seconds(&Settings::drain_timeout)},
       {"--io-threads", "KONTAKTD_IO_THREADS", "HTTP I/O threads (default 2)",
        integer_in(&Settings::io_threads, 1, 64)},
+      {"--handler-threads", "KONTAKTD_HANDLER_THREADS",
+       "threads running request handlers (default 4)", integer_in(&Settings::handler_threads, 1, 64)},
   };
   return kOptions;
 }

@@ -55,7 +55,7 @@ void WorkerPool::job_queued() {
     std::lock_guard lock(mutex_);
     ++pending_wakeups_;
   }
-  wake_.notify_one();
+  wake_.notify_all();  // notify_one could wake the watchdog, which shares the condition
 }
 
 void WorkerPool::stop(RunningJob& job, StopCause cause) {
