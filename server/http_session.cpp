@@ -104,7 +104,9 @@ void HttpSession::reply(HttpResponse r) {
   res->result(static_cast<unsigned>(r.status));
   copy_headers(r, *res);
   res->keep_alive(keep_alive_);
-  if (r.status != 204 && r.status != 304) {
+  if (r.file) {  // HEAD of a download: the length the GET would send, no body
+    res->content_length(r.file->length);
+  } else if (r.status != 204 && r.status != 304) {
     res->body() = std::move(r.body);
     res->prepare_payload();
     if (head_) res->body().clear();  // HEAD: Content-Length of the GET, no body

@@ -27,6 +27,22 @@ beast::tcp_stream connect(net::io_context& ioc, const std::string& host, const s
   return stream;
 }
 
+/// Adds the headers every request carries and sends it; throws TransportError.
+template <class Body>
+void send(beast::tcp_stream& stream, http::request<Body>& req, const std::string& host,
+          const std::string& token, const std::map<std::string, std::string>& headers,
+          std::chrono::seconds timeout) {
+  req.set(http::field::host, host);
+  req.set(http::field::user_agent, "kontakt-cli");
+  if (!token.empty()) req.set(http::field::authorization, "Bearer " + token);
+  for (const auto& [name, value] : headers) req.set(name, value);
+  req.prepare_payload();
+  beast::error_code ec;
+  stream.expires_after(timeout);
+  http::write(stream, req, ec);
+  if (ec) throw TransportError("cannot send the request: " + ec.message());
+}
+
 template <class Message>
 void collect_headers(const Message& m, HttpReply& reply) {
   reply.status = static_cast<int>(m.result_int());
@@ -58,17 +74,10 @@ HttpReply HttpClient::request(const std::string& method, const std::string& targ
   net::io_context ioc;
   beast::tcp_stream stream = connect(ioc, host_, port_, timeout_);
   http::request<http::string_body> req(http::string_to_verb(method), target, 11);
-  req.set(http::field::host, host_);
-  req.set(http::field::user_agent, "kontakt-cli");
-  if (!token_.empty()) req.set(http::field::authorization, "Bearer " + token_);
   if (!content_type.empty()) req.set(http::field::content_type, content_type);
-  for (const auto& [name, value] : headers) req.set(name, value);
   req.body() = body;
-  req.prepare_payload();
+  send(stream, req, host_, token_, headers, timeout_);
   beast::error_code ec;
-  stream.expires_after(timeout_);
-  http::write(stream, req, ec);
-  if (ec) throw TransportError("cannot send the request: " + ec.message());
   beast::flat_buffer buffer;
   http::response_parser<http::string_body> parser;
   parser.body_limit(std::numeric_limits<std::uint64_t>::max());
@@ -88,14 +97,8 @@ HttpReply HttpClient::stream(const std::string& target,
   net::io_context ioc;
   beast::tcp_stream stream = connect(ioc, host_, port_, timeout_);
   http::request<http::empty_body> req(http::verb::get, target, 11);
-  req.set(http::field::host, host_);
-  req.set(http::field::user_agent, "kontakt-cli");
-  if (!token_.empty()) req.set(http::field::authorization, "Bearer " + token_);
-  for (const auto& [name, value] : headers) req.set(name, value);
+  send(stream, req, host_, token_, headers, timeout_);
   beast::error_code ec;
-  stream.expires_after(timeout_);
-  http::write(stream, req, ec);
-  if (ec) throw TransportError("cannot send the request: " + ec.message());
   beast::flat_buffer buffer;
   http::response_parser<http::buffer_body> parser;
   parser.body_limit(std::numeric_limits<std::uint64_t>::max());

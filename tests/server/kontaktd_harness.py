@@ -1,5 +1,7 @@
 """Starts kontaktd on a free loopback port with a temporary data folder, and small HTTP
 helpers the end-to-end tests share (standard library only)."""
+import argparse
+import contextlib
 import http.client
 import json
 import os
@@ -8,6 +10,7 @@ import signal
 import subprocess
 import tempfile
 import time
+import unittest
 import urllib.parse
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -143,3 +146,29 @@ class Daemon:
 
 def quote(s):
     return urllib.parse.quote(s, safe="")
+
+
+@contextlib.contextmanager
+def restartable(exe, args=()):
+    """A started daemon whose data folder outlives kill9()/terminate() + start(), removed at
+    the end."""
+    d = Daemon(exe, args=args)
+    d.own_dir = False
+    d.start()
+    try:
+        yield d
+    finally:
+        d.stop()
+        shutil.rmtree(d.data_dir, ignore_errors=True)
+
+
+def run_tests(module_globals, *programs):
+    """Runs the calling script's unittest cases; `--NAME PATH` for each program sets the
+    module global NAME.upper() (e.g. --kontaktd -> KONTAKTD)."""
+    p = argparse.ArgumentParser()
+    for name in programs:
+        p.add_argument("--" + name, required=True)
+    args, rest = p.parse_known_args()
+    for name in programs:
+        module_globals[name.upper()] = getattr(args, name)
+    unittest.main(argv=[module_globals["__file__"]] + rest, verbosity=2)

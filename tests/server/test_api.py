@@ -4,12 +4,10 @@
 Submit -> poll -> download and open the HDF5; SSE replay and resume; bad decks (422 naming
 the line); oversized bodies (413); unknown jobs (404); auth on and off; 50 concurrent
 submissions; every JSON response checked against proto/openapi.yaml."""
-import argparse
 import hashlib
 import io
 import json
 import socket
-import sys
 import threading
 import unittest
 import zipfile
@@ -20,13 +18,13 @@ import decks
 import kontaktd_harness as harness
 from openapi_check import validate, validate_inline
 
-EXE = None
+KONTAKTD = None
 
 
 class ApiTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.d = harness.Daemon(EXE, args=["--workers", "2", "--max-body", "256K"]).start()
+        cls.d = harness.Daemon(KONTAKTD, args=["--workers", "2", "--max-body", "256K"]).start()
 
     @classmethod
     def tearDownClass(cls):
@@ -227,7 +225,7 @@ class ApiTest(unittest.TestCase):
 
 class AuthTest(unittest.TestCase):
     def test_tokens_on(self):
-        d = harness.Daemon(EXE)
+        d = harness.Daemon(KONTAKTD)
         token_file = d.data_dir + "/tokens"
         with open(token_file, "w") as f:
             f.write("# tokens\nalpha-token\n")
@@ -250,7 +248,7 @@ class AuthTest(unittest.TestCase):
             d.stop()
 
     def test_tokens_off_and_loopback_default(self):
-        d = harness.Daemon(EXE).start()
+        d = harness.Daemon(KONTAKTD).start()
         try:
             self.assertEqual(d.json("GET", "/v1/jobs")[0], 200)
             self.assertIn("listening on http://127.0.0.1:", d.log())
@@ -259,8 +257,4 @@ class AuthTest(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    p = argparse.ArgumentParser()
-    p.add_argument("--kontaktd", required=True)
-    args, rest = p.parse_known_args()
-    EXE = args.kontaktd
-    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
+    harness.run_tests(globals(), "kontaktd")

@@ -1,7 +1,6 @@
 #!/usr/bin/python3
 """End-to-end: the Python client (clients/python), the `kontakt` daemon commands and the
 design-loop example against a live kontaktd."""
-import argparse
 import csv
 import hashlib
 import os
@@ -154,9 +153,4 @@ class ClientTest(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    p = argparse.ArgumentParser()
-    p.add_argument("--kontaktd", required=True)
-    p.add_argument("--kontakt", required=True)
-    args, rest = p.parse_known_args()
-    KONTAKTD, KONTAKT = args.kontaktd, args.kontakt
-    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
+    harness.run_tests(globals(), "kontaktd", "kontakt")

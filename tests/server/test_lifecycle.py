@@ -2,8 +2,6 @@
 """End-to-end job lifecycle: cancel of queued and running jobs, the wall-time limit,
 kill -9 with jobs queued and running then restart (every accepted job completes), and
 SIGTERM draining (running jobs are requeued and finish after a restart)."""
-import argparse
-import sys
 import time
 import unittest
 
@@ -11,7 +9,7 @@ import decks
 import kontaktd_harness as harness
 from openapi_check import validate
 
-EXE = None
+KONTAKTD = None
 
 
 def wait_running_with_progress(d, job_id, timeout=30):
@@ -29,7 +27,7 @@ def wait_running_with_progress(d, job_id, timeout=30):
 
 class CancelTest(unittest.TestCase):
     def test_cancel_queued_and_running(self):
-        d = harness.Daemon(EXE, args=["--workers", "1"]).start()
+        d = harness.Daemon(KONTAKTD, args=["--workers", "1"]).start()
         try:
             _, _, running = d.submit(decks.long_running())
             _, _, queued = d.submit(decks.tiny())
@@ -65,7 +63,7 @@ class CancelTest(unittest.TestCase):
             d.stop()
 
     def test_wall_time_limit(self):
-        d = harness.Daemon(EXE, args=["--job-time-limit", "0.5"]).start()
+        d = harness.Daemon(KONTAKTD, args=["--job-time-limit", "0.5"]).start()
         try:
             _, _, job = d.submit(decks.long_running())
             done = d.wait(job["id"], timeout=20)
@@ -77,10 +75,7 @@ class CancelTest(unittest.TestCase):
 
 class CrashTest(unittest.TestCase):
     def test_kill9_with_jobs_queued_and_running_then_restart(self):
-        d = harness.Daemon(EXE, args=["--workers", "1"])
-        d.own_dir = False
-        d.start()
-        try:
+        with harness.restartable(KONTAKTD, ["--workers", "1"]) as d:
             ids = [d.submit(decks.long_running(increments=150))[2]["id"]]
             ids += [d.submit(decks.beam(3))[2]["id"] for _ in range(4)]
             wait_running_with_progress(d, ids[0])
@@ -95,30 +90,18 @@ class CrashTest(unittest.TestCase):
             statuses = [e[2]["status"] for e in events if e[1] == "status"]
             self.assertEqual(statuses, ["queued", "running", "queued", "running", "succeeded"])
             self.assertIn("requeued", d.log())
-        finally:
-            d.stop()
-            __import__("shutil").rmtree(d.data_dir, ignore_errors=True)
 
     def test_repeated_crashes_fail_the_job_as_worker_lost(self):
-        d = harness.Daemon(EXE, args=["--workers", "1", "--max-attempts", "1"])
-        d.own_dir = False
-        d.start()
-        try:
+        with harness.restartable(KONTAKTD, ["--workers", "1", "--max-attempts", "1"]) as d:
             job_id = d.submit(decks.long_running())[2]["id"]
             wait_running_with_progress(d, job_id)
             d.kill9()
             d.start()
             job = d.wait(job_id, timeout=30)
             self.assertEqual((job["status"], job["reason"]["code"]), ("failed", "worker_lost"))
-        finally:
-            d.stop()
-            __import__("shutil").rmtree(d.data_dir, ignore_errors=True)
 
     def test_sigterm_drains_and_requeues_running_jobs(self):
-        d = harness.Daemon(EXE, args=["--workers", "1", "--drain-timeout", "0.2"])
-        d.own_dir = False
-        d.start()
-        try:
+        with harness.restartable(KONTAKTD, ["--workers", "1", "--drain-timeout", "0.2"]) as d:
             running = d.submit(decks.long_running(increments=150))[2]["id"]
             queued = d.submit(decks.tiny())[2]["id"]
             wait_running_with_progress(d, running)
@@ -131,14 +114,7 @@ class CrashTest(unittest.TestCase):
                 self.assertEqual(d.wait(job_id, timeout=60)["status"], "succeeded")
             self.assertEqual(d.json("GET", f"/v1/jobs/{running}")[2]["attempts"], 1,
                              "a drain does not count as a lost attempt")
-        finally:
-            d.stop()
-            __import__("shutil").rmtree(d.data_dir, ignore_errors=True)
 
 
 if __name__ == "__main__":
-    p = argparse.ArgumentParser()
-    p.add_argument("--kontaktd", required=True)
-    args, rest = p.parse_known_args()
-    EXE = args.kontaktd
-    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
+    harness.run_tests(globals(), "kontaktd")
