@@ -18,6 +18,7 @@ namespace {
 constexpr auto kStreamPoll = std::chrono::milliseconds(20);  // an atomic read when idle
 constexpr auto kStreamKeepAlive = std::chrono::seconds(15);
 constexpr int kEventsPerWrite = 500;
+constexpr std::size_t kMaxDrained = 16u << 20;  ///< bytes of a refused body read and dropped
 
 /// The plain request the router sees; nullopt when the target's query is malformed.
 std::optional<HttpRequest> to_plain(http::request<http::string_body>&& req) {
@@ -152,8 +153,10 @@ void HttpSession::drain_and_close() {
   beast::error_code ec;
   stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ec);
   stream_.expires_after(std::chrono::seconds(2));
-  stream_.async_read_some(net::buffer(discard_), [self = shared_from_this()](beast::error_code e, std::size_t) {
-    if (e) return self->do_close();
+  stream_.async_read_some(net::buffer(discard_), [self = shared_from_this()](beast::error_code e,
+                                                                              std::size_t n) {
+    self->drained_ += n;
+    if (e || self->drained_ > kMaxDrained) return self->do_close();
     self->drain_and_close();
   });
 }

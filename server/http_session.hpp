@@ -66,6 +66,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   std::chrono::steady_clock::time_point last_write_;
   std::string frames_;
   std::array<char, 4096> discard_{};
+  std::size_t drained_ = 0;  ///< bytes of a refused body dropped so far
 };
 
 }  // namespace kontakt::server
