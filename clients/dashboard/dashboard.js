@@ -33,7 +33,7 @@ function render(job) {
   tr.append(cell(job.name + " (" + job.id.slice(0, 8) + ")"));
   const chip = document.createElement("span");
   chip.className = "chip " + job.status;
-  chip.textContent = job.reason ? job.status + ": " + job.reason.code : job.status;
+  chip.textContent = job.reason && job.reason.code !== job.status ? job.status + ": " + job.reason.code : job.status;
   const status = document.createElement("td");
   status.append(chip);
   tr.append(status);
