@@ -35,12 +35,11 @@ Real nodal_area_weight(element::Topology topo, int local) {
 
 }  // namespace
 
-ContactSystem::ContactSystem(const model::Model& model, std::optional<model::ContactScheme> scheme)
-    : model_(model) {
+ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
   for (const auto& def : model.contact_pairs) {
     Pair pair;
     pair.def = &def;
-    pair.scheme = scheme.value_or(def.scheme);
+    pair.scheme = def.scheme;
     pair.behavior = model.interactions.at(def.interaction).behavior;
     pair.slave = make_contact_surface(model, model.surfaces.at(def.slave));
     pair.master = make_contact_surface(model, model.surfaces.at(def.master));

@@ -13,7 +13,6 @@
 // displacements; the only state carried between increments is the initial-overlap ramp.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "contact/aabb_tree.hpp"
@@ -46,8 +45,8 @@ struct GroupContribution {
 
 class ContactSystem {
  public:
-  /// Builds the surfaces of every pair; `scheme` overrides each pair's scheme when given.
-  ContactSystem(const model::Model& model, std::optional<model::ContactScheme> scheme);
+  /// Builds the surfaces of every pair (each with the scheme its ContactPair names).
+  explicit ContactSystem(const model::Model& model);
 
   bool empty() const { return pairs_.empty(); }
   ContactRules rules() const;

@@ -9,8 +9,10 @@ PACKAGES=(
   libboost-dev nlohmann-json3-dev
   libhdf5-dev hdf5-tools
   libsqlite3-dev sqlite3
+  libzip-dev libssl-dev
   libgtest-dev
-  python3 python3-numpy python3-h5py
+  python3 python3-numpy python3-h5py python3-yaml python3-jsonschema
+  wrk curl
   time
   calculix-ccx calculix-ccx-test calculix-ccx-doc
 )

@@ -267,7 +267,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   Real total_time_start = 0, last_q_bar = 0, max_mises = 0;
   Real max_contact_pressure = 0, total_contact_force = 0;
   int total_iterations = 0, drift_redos = 0;
-  contact::ContactSystem contact(model, options.scheme);
+  contact::ContactSystem contact(model);
   const contact::ContactRules contact_rules = contact.rules();
   ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();

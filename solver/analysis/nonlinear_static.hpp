@@ -9,7 +9,6 @@
 
 #include "analysis/events.hpp"
 #include "analysis/linear_static.hpp"
-#include "model/contact.hpp"
 #include "nonlinear/solution_controls.hpp"
 
 namespace kontakt::analysis {
@@ -19,8 +18,6 @@ struct NonlinearOptions {
   const std::atomic<bool>* cancel = nullptr;      ///< polled once per iteration
   /// Overrides every step's *CONTROLS when set (tests, expert use).
   std::optional<nonlinear::SolutionControls> controls;
-  /// Overrides the scheme of every contact pair (the CLI's --scheme, the API's scheme).
-  std::optional<model::ContactScheme> scheme;
 };
 
 /// The run was cancelled through NonlinearOptions::cancel; converged frames are kept.

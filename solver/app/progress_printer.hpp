@@ -1,5 +1,5 @@
 // EventSink for the terminal: a one-line, rewritten progress display on a TTY and plain lines
-// otherwise (pipes, CI logs).
+// otherwise (pipes, CI logs). Warnings always go to stderr, even when quiet.
 #pragma once
 
 #include <cstdio>
@@ -10,12 +10,13 @@ namespace kontakt::app {
 
 class ProgressPrinter final : public analysis::EventSink {
  public:
-  explicit ProgressPrinter(std::FILE* out);
+  explicit ProgressPrinter(std::FILE* out, bool quiet = false);
   void on_event(const analysis::Event& event) override;
 
  private:
   std::FILE* out_;
   bool tty_;
+  bool quiet_;
 };
 
 }  // namespace kontakt::app

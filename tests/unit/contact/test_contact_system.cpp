@@ -60,7 +60,7 @@ TEST_P(EveryScheme, AssembledTangentMatchesFiniteDifferences) {
   t.rotation_deg = 17;
   t.offset_x = 0.05;
   model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(GetParam()));
-  ContactSystem sys(m, std::nullopt);
+  ContactSystem sys(m);
   const VecX u = pressed(m, 2e-3, 3);
   sys.begin_increment(u, {.step = 2}, 1);
   VecX f0;
@@ -104,7 +104,7 @@ TEST(ContactSystem, GaussCutAreasSumToEachSlaveFaceArea) {
       t.offset_x = 0.04;
       t.offset_y = -0.03;
       model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
-      ContactSystem sys(m, std::nullopt);
+      ContactSystem sys(m);
       const VecX u = VecX::Zero(3 * m.n_nodes());
       sys.begin_increment(u, {.step = 1}, 1);
       sys.evaluate(u, 1, 1);
@@ -126,7 +126,7 @@ TEST(ContactSystem, FarApartSurfacesGetNoCandidates) {
   fixtures::TwoBlocks t;
   t.gap = 5.0;
   model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
-  ContactSystem sys(m, std::nullopt);
+  ContactSystem sys(m);
   const VecX u = VecX::Zero(3 * m.n_nodes());
   sys.begin_increment(u, {.step = 2}, 1);
   EXPECT_TRUE(sys.groups().empty());
@@ -141,7 +141,7 @@ TEST(ContactSystem, InitialOverlapIsRampedOutOverStepOne) {
   fixtures::TwoBlocks t;
   t.gap = -1e-3;
   model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc3"));
-  ContactSystem sys(m, std::nullopt);
+  ContactSystem sys(m);
   const VecX u = VecX::Zero(3 * m.n_nodes());
   sys.begin_increment(u, {.step = 1, .increment = 1, .fraction_start = 0, .fraction_end = 0.4}, 1);
   sys.evaluate(u, 1, 1);
@@ -189,7 +189,7 @@ TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
   for (int n = 0; n < m.n_nodes(); ++n)
     if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
       m.mesh.coords(n, 2) -= 0.3 * std::pow(m.mesh.coords(n, 0) - 0.5, 2);
-  ContactSystem sys(m, std::nullopt);
+  ContactSystem sys(m);
   VecX u = VecX::Zero(3 * m.n_nodes());
   for (int n = 0; n < m.n_nodes(); ++n)
     if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;

@@ -1,0 +1,106 @@
+#include "server/daemon.hpp"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <boost/asio/thread_pool.hpp>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "server/handlers/routes.hpp"
+#include "server/job_files.hpp"
+#include "server/job_store.hpp"
+#include "server/listener.hpp"
+#include "server/worker_pool.hpp"
+
+namespace fs = std::filesystem;
+namespace net = boost::asio;
+
+namespace kontakt::server {
+
+namespace {
+
+/// Zip uploads may unpack to this multiple of the body limit (decks compress ~10x).
+constexpr std::uint64_t kUnpackFactor = 16;
+
+std::set<std::string> read_tokens(const std::string& file) {
+  if (file.empty()) return {};
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read the token file " + file);
+  std::stringstream text;
+  text << in.rdbuf();
+  const auto tokens = parse_token_file(text.str());
+  if (tokens.empty()) throw std::runtime_error("the token file " + file + " has no token");
+  return {tokens.begin(), tokens.end()};
+}
+
+/// Job folders without a record are uploads that a crash interrupted before their 201.
+void remove_orphan_folders(JobStore& store, const JobFiles& files) {
+  const auto ids = store.all_ids();
+  const std::set<std::string> known(ids.begin(), ids.end());
+  for (const std::string& id : files.folder_ids())
+    if (!known.count(id)) files.remove(id);
+}
+
+}  // namespace
+
+int run_daemon(const Settings& settings) {
+  const std::set<std::string> tokens = read_tokens(settings.token_file);
+  fs::create_directories(settings.data_dir);
+  JobStore store(fs::path(settings.data_dir) / "kontakt.db");
+  JobFiles files(settings.data_dir);
+  const RecoveryReport recovered = store.recover(settings.max_attempts);
+  if (recovered.requeued + recovered.failed + recovered.canceled > 0)
+    std::printf("kontaktd: recovered after a stop: %d requeued, %d failed (worker_lost), %d canceled\n",
+                recovered.requeued, recovered.failed, recovered.canceled);
+  remove_orphan_folders(store, files);
+
+  WorkerPool pool(store, files, {.workers = settings.workers,
+                                 .threads_per_job = settings.threads_per_job,
+                                 .job_time_limit = settings.job_time_limit});
+  handlers::ApiContext api{.store = store, .files = files, .control = pool,
+                           .max_unpacked = kUnpackFactor * settings.max_body};
+  Router router = handlers::make_router(api);
+  router.require_tokens(tokens, {"/healthz"});
+
+  net::io_context ioc(settings.io_threads);
+  net::thread_pool handler_pool(static_cast<std::size_t>(settings.handler_threads));
+  SessionContext sessions{.router = router, .store = store, .handler_pool = handler_pool,
+                          .max_body = settings.max_body,
+                          .request_timeout = std::chrono::seconds(settings.request_timeout)};
+  const net::ip::tcp::endpoint endpoint(net::ip::make_address(settings.bind), settings.port);
+  auto listener = std::make_shared<Listener>(ioc, endpoint, sessions);
+  listener->start();
+  pool.start();
+
+  std::thread drainer;
+  net::signal_set signals(ioc, SIGINT, SIGTERM);
+  signals.async_wait([&](const boost::system::error_code& ec, int signal) {
+    if (ec) return;
+    std::printf("kontaktd: signal %d: draining (up to %g s)\n", signal, settings.drain_timeout);
+    std::fflush(stdout);
+    listener->stop();
+    // Drain off the I/O threads: status requests keep being answered meanwhile.
+    drainer = std::thread([&] {
+      pool.drain(std::chrono::milliseconds(static_cast<long long>(1000 * settings.drain_timeout)));
+      ioc.stop();
+    });
+  });
+  std::printf("kontaktd: listening on http://%s:%u (data %s, %d workers)\n", settings.bind.c_str(),
+              listener->port(), settings.data_dir.c_str(), settings.workers);
+  std::fflush(stdout);
+
+  std::vector<std::thread> io_threads;
+  for (int i = 1; i < settings.io_threads; ++i) io_threads.emplace_back([&ioc] { ioc.run(); });
+  ioc.run();
+  for (auto& t : io_threads) t.join();
+  if (drainer.joinable()) drainer.join();
+  handler_pool.join();
+  std::printf("kontaktd: stopped\n");
+  return 0;
+}
+
+}  // namespace kontakt::server

@@ -1,0 +1,33 @@
+// What the API handlers work with: the store, the job folders, and the worker pool seen
+// through JobControl (so handler tests run without workers).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "server/job_files.hpp"
+#include "server/job_store.hpp"
+
+namespace kontakt::server::handlers {
+
+/// The worker pool as the handlers see it.
+class JobControl {
+ public:
+  virtual ~JobControl() = default;
+  /// A job was queued: wake an idle worker.
+  virtual void job_queued() = 0;
+  /// The job is now canceling: raise its cancel flag if it runs here.
+  virtual void cancel_running(const std::string& id) = 0;
+  /// Workers configured / busy, for /healthz and /metrics.
+  virtual int n_workers() const = 0;
+  virtual int n_busy() const = 0;
+};
+
+struct ApiContext {
+  JobStore& store;
+  JobFiles& files;
+  JobControl& control;
+  std::uint64_t max_unpacked = 1ull << 30;  ///< zip uploads unpack to at most this many bytes
+};
+
+}  // namespace kontakt::server::handlers

@@ -1,0 +1,21 @@
+// The API's routes, registered per resource family.
+#pragma once
+
+#include "server/handlers/api_context.hpp"
+#include "server/router.hpp"
+
+namespace kontakt::server::handlers {
+
+/// POST/GET /v1/jobs, GET/DELETE /v1/jobs/{id}, POST /v1/jobs/{id}/cancel.
+void add_job_routes(Router& router, ApiContext& ctx);
+/// GET /v1/jobs/{id}/events (SSE), /iterations, /increments.
+void add_event_routes(Router& router, ApiContext& ctx);
+/// GET /v1/jobs/{id}/results, /results/{name}, /summary.
+void add_result_routes(Router& router, ApiContext& ctx);
+/// GET /healthz, /metrics, /v1/openapi.json, / (dashboard).
+void add_service_routes(Router& router, ApiContext& ctx);
+
+/// All of the above: the daemon's router.
+Router make_router(ApiContext& ctx);
+
+}  // namespace kontakt::server::handlers

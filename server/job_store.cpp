@@ -1,0 +1,447 @@
+#include "server/job_store.hpp"
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "server/job_store_schema.hpp"
+
+namespace kontakt::server {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kJobColumns =
+    "id, name, status, reason, message, main_file, scheme, labels, created_ms, updated_ms, "
+    "started_ms, finished_ms, attempts, n_steps, planned_time, progress, summary, "
+    "idempotency_key, fingerprint";
+
+json progress_to_json(const JobProgress& p) {
+  json j{{"step", p.step},           {"increment", p.increment}, {"attempt", p.attempt},
+         {"iteration", p.iteration}, {"step_time", p.step_time}, {"total_time", p.total_time},
+         {"dt", p.dt}};
+  if (p.residual) j["residual"] = *p.residual;
+  if (p.contact_elements) j["contact_elements"] = *p.contact_elements;
+  return j;
+}
+
+JobProgress progress_from_json(const json& j) {
+  JobProgress p;
+  p.step = j.value("step", 0);
+  p.increment = j.value("increment", 0);
+  p.attempt = j.value("attempt", 0);
+  p.iteration = j.value("iteration", 0);
+  p.step_time = j.value("step_time", 0.0);
+  p.total_time = j.value("total_time", 0.0);
+  p.dt = j.value("dt", 0.0);
+  if (j.contains("residual")) p.residual = j["residual"].get<double>();
+  if (j.contains("contact_elements")) p.contact_elements = j["contact_elements"].get<int>();
+  return p;
+}
+
+json summary_to_json(const JobSummary& s) {
+  json j{{"iterations", s.iterations}, {"wall_time", s.wall_time}};
+  if (s.max_displacement) j["max_displacement"] = *s.max_displacement;
+  if (s.max_mises) j["max_mises"] = *s.max_mises;
+  if (s.max_contact_pressure) j["max_contact_pressure"] = *s.max_contact_pressure;
+  if (s.total_contact_force) j["total_contact_force"] = *s.total_contact_force;
+  return j;
+}
+
+JobSummary summary_from_json(const json& j) {
+  JobSummary s;
+  s.iterations = j.value("iterations", 0);
+  s.wall_time = j.value("wall_time", 0.0);
+  if (j.contains("max_displacement")) s.max_displacement = j["max_displacement"].get<double>();
+  if (j.contains("max_mises")) s.max_mises = j["max_mises"].get<double>();
+  if (j.contains("max_contact_pressure"))
+    s.max_contact_pressure = j["max_contact_pressure"].get<double>();
+  if (j.contains("total_contact_force"))
+    s.total_contact_force = j["total_contact_force"].get<double>();
+  return s;
+}
+
+/// The row read with kJobColumns, in that order.
+JobRecord record_from_row(const Statement& st) {
+  JobRecord r;
+  r.id = st.text(0);
+  r.name = st.text(1);
+  r.status = status_from_name(st.text(2)).value_or(JobStatus::Failed);
+  r.reason = st.text(3);
+  r.message = st.text(4);
+  r.main_file = st.text(5);
+  r.scheme = st.optional_text(6);
+  r.labels = json::parse(st.text(7)).get<std::map<std::string, std::string>>();
+  r.created_ms = st.integer(8);
+  r.updated_ms = st.integer(9);
+  if (!st.is_null(10)) r.started_ms = st.integer(10);
+  if (!st.is_null(11)) r.finished_ms = st.integer(11);
+  r.attempts = static_cast<int>(st.integer(12));
+  r.n_steps = static_cast<int>(st.integer(13));
+  r.planned_time = st.real(14);
+  r.progress = progress_from_json(json::parse(st.text(15)));
+  if (!st.is_null(16)) r.summary = summary_from_json(json::parse(st.text(16)));
+  r.idempotency_key = st.optional_text(17);
+  r.fingerprint = st.text(18);
+  return r;
+}
+
+std::optional<JobRecord> select_job(SqliteDb& db, const std::string& where,
+                                    const std::string& value) {
+  Statement st(db, std::string("SELECT ") + kJobColumns + " FROM jobs WHERE " + where + " = ?");
+  st.bind(1, value);
+  if (!st.step()) return std::nullopt;
+  return record_from_row(st);
+}
+
+std::optional<JobStatus> status_of(SqliteDb& db, const std::string& id) {
+  Statement st(db, "SELECT status FROM jobs WHERE id = ?");
+  st.bind(1, id);
+  if (!st.step()) return std::nullopt;
+  return status_from_name(st.text(0));
+}
+
+/// Appends one event with the job's next sequence number; returns it.
+std::int64_t insert_event(SqliteDb& db, const std::string& id, const std::string& kind,
+                          const std::string& data) {
+  Statement next(db, "UPDATE jobs SET next_seq = next_seq + 1 WHERE id = ? "
+                     "RETURNING next_seq - 1, attempts");
+  next.bind(1, id);
+  if (!next.step()) throw StoreError("no job " + id);
+  const std::int64_t seq = next.integer(0);
+  const std::int64_t run = next.integer(1);
+  next.run();
+  Statement ins(db, "INSERT INTO job_events (job_id, seq, run, kind, data) VALUES (?, ?, ?, ?, ?)");
+  ins.bind(1, id).bind(2, seq).bind(3, run).bind(4, kind).bind(5, data).run();
+  return seq;
+}
+
+}  // namespace
+
+std::int64_t now_ms() {
+  using namespace std::chrono;
+  return duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count();
+}
+
+/// A reader connection borrowed from the pool for one call.
+class JobStore::ReadLease {
+ public:
+  ReadLease(JobStore& store, std::unique_ptr<SqliteDb> db) : store_(store), db_(std::move(db)) {}
+  ~ReadLease() {
+    std::lock_guard lock(store_.readers_mutex_);
+    store_.idle_readers_.push_back(std::move(db_));
+  }
+  ReadLease(const ReadLease&) = delete;
+  ReadLease& operator=(const ReadLease&) = delete;
+  SqliteDb& db() { return *db_; }
+
+ private:
+  JobStore& store_;
+  std::unique_ptr<SqliteDb> db_;
+};
+
+JobStore::JobStore(const std::filesystem::path& db_file) : file_(db_file), writer_(db_file) {
+  migrate(writer_);
+}
+
+JobStore::ReadLease JobStore::read() {
+  {
+    std::lock_guard lock(readers_mutex_);
+    if (!idle_readers_.empty()) {
+      auto db = std::move(idle_readers_.back());
+      idle_readers_.pop_back();
+      return ReadLease(*this, std::move(db));
+    }
+  }
+  return ReadLease(*this, std::make_unique<SqliteDb>(file_));
+}
+
+bool JobStore::transition(const std::string& id, JobStatus to, const std::string& reason,
+                          const std::string& message) {
+  const auto from = status_of(writer_, id);
+  if (!from || !transition_allowed(*from, to)) return false;
+  const std::int64_t now = now_ms();
+  Statement st(writer_,
+               "UPDATE jobs SET status = ?, reason = ?, message = ?, updated_ms = ?, "
+               "finished_ms = CASE WHEN ? THEN ? ELSE NULL END WHERE id = ?");
+  st.bind(1, status_name(to)).bind(2, reason).bind(3, message).bind(4, now);
+  st.bind(5, static_cast<std::int64_t>(is_terminal(to))).bind(6, now).bind(7, id).run();
+  json event{{"event", "status"}, {"status", status_name(to)}};
+  if (!reason.empty()) event["reason"] = reason;
+  if (!message.empty()) event["message"] = message;
+  insert_event(writer_, id, "status", event.dump());
+  return true;
+}
+
+std::pair<InsertResult, JobRecord> JobStore::insert_job(const NewJob& job) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  if (job.idempotency_key) {
+    if (auto existing = select_job(writer_, "idempotency_key", *job.idempotency_key)) {
+      const auto result = existing->fingerprint == job.fingerprint ? InsertResult::Replayed
+                                                                   : InsertResult::KeyConflict;
+      return {result, *existing};
+    }
+  }
+  const std::int64_t now = now_ms();
+  Statement st(writer_,
+               "INSERT INTO jobs (id, name, status, main_file, scheme, labels, created_ms, "
+               "updated_ms, n_steps, planned_time, idempotency_key, fingerprint) "
+               "VALUES (?, ?, 'queued', ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  st.bind(1, job.id).bind(2, job.name).bind(3, job.main_file).bind_optional(4, job.scheme);
+  st.bind(5, json(job.labels).dump()).bind(6, now).bind(7, now);
+  st.bind(8, static_cast<std::int64_t>(job.n_steps)).bind(9, job.planned_time);
+  st.bind_optional(10, job.idempotency_key).bind(11, job.fingerprint).run();
+  insert_event(writer_, job.id, "status", json{{"event", "status"}, {"status", "queued"}}.dump());
+  auto record = select_job(writer_, "id", job.id);
+  tx.commit();
+  ++generation_;
+  return {InsertResult::Created, *record};
+}
+
+std::optional<JobRecord> JobStore::find_job(const std::string& id) {
+  auto lease = read();
+  return select_job(lease.db(), "id", id);
+}
+
+std::optional<JobRecord> JobStore::find_by_key(const std::string& idempotency_key) {
+  auto lease = read();
+  return select_job(lease.db(), "idempotency_key", idempotency_key);
+}
+
+JobPage JobStore::list_jobs(const JobQuery& query) {
+  std::string sql = std::string("SELECT ") + kJobColumns + " FROM jobs WHERE 1";
+  if (!query.statuses.empty()) {
+    sql += " AND status IN (";
+    for (std::size_t i = 0; i < query.statuses.size(); ++i) sql += i ? ", ?" : "?";
+    sql += ")";
+  }
+  for (std::size_t i = 0; i < query.labels.size(); ++i)
+    sql += " AND json_extract(labels, '$.\"' || ? || '\"') = ?";
+  if (query.after) sql += " AND (created_ms < ? OR (created_ms = ? AND id < ?))";
+  sql += " ORDER BY created_ms DESC, id DESC LIMIT ?";
+  auto lease = read();
+  Statement st(lease.db(), sql);
+  int b = 1;
+  for (JobStatus s : query.statuses) st.bind(b++, status_name(s));
+  for (const auto& [key, value] : query.labels) {
+    st.bind(b++, key);
+    st.bind(b++, value);
+  }
+  if (query.after) {
+    st.bind(b++, query.after->first);
+    st.bind(b++, query.after->first);
+    st.bind(b++, query.after->second);
+  }
+  st.bind(b, static_cast<std::int64_t>(query.limit + 1));
+  JobPage page;
+  while (st.step()) page.jobs.push_back(record_from_row(st));
+  if (static_cast<int>(page.jobs.size()) > query.limit) {
+    page.jobs.pop_back();
+    page.more = true;
+  }
+  return page;
+}
+
+int JobStore::queue_position(const JobRecord& job) {
+  auto lease = read();
+  Statement st(lease.db(),
+               "SELECT COUNT(*) FROM jobs WHERE status = 'queued' AND "
+               "(created_ms < ? OR (created_ms = ? AND id <= ?))");
+  st.bind(1, job.created_ms).bind(2, job.created_ms).bind(3, job.id);
+  st.step();
+  return static_cast<int>(st.integer(0));
+}
+
+std::optional<JobRecord> JobStore::claim_next() {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  Statement next(writer_, "SELECT id FROM jobs WHERE status = 'queued' "
+                          "ORDER BY created_ms, id LIMIT 1");
+  if (!next.step()) return std::nullopt;
+  const std::string id = next.text(0);
+  Statement st(writer_, "UPDATE jobs SET attempts = attempts + 1, started_ms = ?, "
+                        "progress = '{}', summary = NULL WHERE id = ?");
+  st.bind(1, now_ms()).bind(2, id).run();
+  transition(id, JobStatus::Running, "", "");
+  auto record = select_job(writer_, "id", id);
+  tx.commit();
+  ++generation_;
+  return record;
+}
+
+std::optional<JobRecord> JobStore::request_cancel(const std::string& id) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  const auto status = status_of(writer_, id);
+  if (!status) return std::nullopt;
+  if (*status == JobStatus::Queued) transition(id, JobStatus::Canceled, "canceled", "canceled before it started");
+  if (*status == JobStatus::Running) transition(id, JobStatus::Canceling, "", "");
+  auto record = select_job(writer_, "id", id);
+  tx.commit();
+  ++generation_;
+  return record;
+}
+
+bool JobStore::finish_job(const std::string& id, JobStatus to, const std::string& reason,
+                          const std::string& message, const std::optional<JobSummary>& summary,
+                          const std::vector<Artifact>& artifacts) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  if (status_of(writer_, id) == JobStatus::Canceling) to = JobStatus::Canceled;
+  const std::string why = to == JobStatus::Canceled && reason.empty() ? "canceled" : reason;
+  if (!transition(id, to, why, message)) return false;
+  if (summary) {
+    Statement st(writer_, "UPDATE jobs SET summary = ? WHERE id = ?");
+    st.bind(1, summary_to_json(*summary).dump()).bind(2, id).run();
+  }
+  Statement clear(writer_, "DELETE FROM artifacts WHERE job_id = ?");
+  clear.bind(1, id).run();
+  for (const Artifact& a : artifacts) {
+    Statement st(writer_, "INSERT INTO artifacts (job_id, name, media_type, size, sha256) "
+                          "VALUES (?, ?, ?, ?, ?)");
+    st.bind(1, id).bind(2, a.name).bind(3, a.media_type).bind(4, a.size).bind(5, a.sha256).run();
+  }
+  tx.commit();
+  ++generation_;
+  return true;
+}
+
+bool JobStore::requeue(const std::string& id) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  if (!transition(id, JobStatus::Queued, "requeued", "the daemon stopped during the run")) return false;
+  Statement st(writer_, "UPDATE jobs SET attempts = attempts - 1, started_ms = NULL WHERE id = ?");
+  st.bind(1, id).run();
+  tx.commit();
+  ++generation_;
+  return true;
+}
+
+RecoveryReport JobStore::recover(int max_attempts) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  RecoveryReport report;
+  std::vector<std::pair<std::string, std::pair<JobStatus, int>>> stale;
+  {
+    Statement st(writer_, "SELECT id, status, attempts FROM jobs "
+                          "WHERE status IN ('running', 'canceling')");
+    while (st.step())
+      stale.push_back({st.text(0), {*status_from_name(st.text(1)), static_cast<int>(st.integer(2))}});
+  }
+  for (const auto& [id, state] : stale) {
+    const auto [status, attempts] = state;
+    if (status == JobStatus::Canceling) {
+      transition(id, JobStatus::Canceled, "canceled", "the daemon stopped while canceling");
+      ++report.canceled;
+    } else if (attempts >= max_attempts) {
+      transition(id, JobStatus::Failed, "worker_lost",
+                 "the daemon stopped during each of " + std::to_string(attempts) + " runs");
+      ++report.failed;
+    } else {
+      transition(id, JobStatus::Queued, "requeued", "the daemon stopped during the run");
+      ++report.requeued;
+    }
+  }
+  tx.commit();
+  ++generation_;
+  return report;
+}
+
+JobStore::DeleteResult JobStore::delete_job(const std::string& id) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  const auto status = status_of(writer_, id);
+  if (!status) return DeleteResult::NotFound;
+  if (!is_terminal(*status)) return DeleteResult::NotFinished;
+  Statement st(writer_, "DELETE FROM jobs WHERE id = ?");
+  st.bind(1, id).run();
+  tx.commit();
+  ++generation_;
+  return DeleteResult::Deleted;
+}
+
+std::int64_t JobStore::append_event(const std::string& id, const std::string& kind,
+                                    const std::string& data,
+                                    const std::optional<JobProgress>& progress) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_, Durability::Flushed);  // one per solver event: no fsync each
+  const std::int64_t seq = insert_event(writer_, id, kind, data);
+  Statement st(writer_, "UPDATE jobs SET updated_ms = ?, progress = coalesce(?, progress) "
+                        "WHERE id = ?");
+  st.bind(1, now_ms());
+  if (progress) st.bind(2, progress_to_json(*progress).dump());
+  else st.bind_null(2);
+  st.bind(3, id).run();
+  tx.commit();
+  ++generation_;
+  return seq;
+}
+
+std::vector<StoredEvent> JobStore::events_since(const std::string& id, std::int64_t since,
+                                                const std::vector<std::string>& kinds,
+                                                int limit) {
+  std::string sql = "SELECT seq, run, kind, data FROM job_events WHERE job_id = ? AND seq > ?";
+  if (!kinds.empty()) {
+    sql += " AND kind IN (";
+    for (std::size_t i = 0; i < kinds.size(); ++i) sql += i ? ", ?" : "?";
+    sql += ")";
+  }
+  sql += " ORDER BY seq LIMIT ?";
+  auto lease = read();
+  Statement st(lease.db(), sql);
+  int b = 1;
+  st.bind(b++, id);
+  st.bind(b++, since);
+  for (const auto& k : kinds) st.bind(b++, k);
+  st.bind(b, static_cast<std::int64_t>(limit));
+  std::vector<StoredEvent> events;
+  while (st.step())
+    events.push_back({st.integer(0), static_cast<int>(st.integer(1)), st.text(2), st.text(3)});
+  return events;
+}
+
+std::vector<Artifact> JobStore::artifacts(const std::string& id) {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT name, media_type, size, sha256 FROM artifacts "
+                           "WHERE job_id = ? ORDER BY name");
+  st.bind(1, id);
+  std::vector<Artifact> list;
+  while (st.step()) list.push_back({st.text(0), st.text(1), st.integer(2), st.text(3)});
+  return list;
+}
+
+StoreCounts JobStore::counts() {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT status, COUNT(*) FROM jobs GROUP BY status");
+  StoreCounts c;
+  while (st.step()) {
+    const auto status = status_from_name(st.text(0));
+    const int n = static_cast<int>(st.integer(1));
+    if (!status) continue;
+    if (*status == JobStatus::Queued) c.queued = n;
+    else if (*status == JobStatus::Running) c.running = n;
+    else if (*status == JobStatus::Canceling) c.canceling = n;
+    else c.finished[status_name(*status)] = n;
+  }
+  return c;
+}
+
+std::vector<double> JobStore::run_durations() {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT finished_ms - started_ms FROM jobs "
+                           "WHERE finished_ms IS NOT NULL AND started_ms IS NOT NULL");
+  std::vector<double> seconds;
+  while (st.step()) seconds.push_back(static_cast<double>(st.integer(0)) / 1000.0);
+  return seconds;
+}
+
+std::vector<std::string> JobStore::all_ids() {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT id FROM jobs");
+  std::vector<std::string> ids;
+  while (st.step()) ids.push_back(st.text(0));
+  return ids;
+}
+
+}  // namespace kontakt::server

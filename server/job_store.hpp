@@ -1,0 +1,113 @@
+// The job store: every job, its event log and its published artifacts in one SQLite database
+// (WAL). One writer connection, guarded by a mutex, makes every change in a BEGIN IMMEDIATE
+// transaction of its own; readers use a small pool of connections and never block it. Every
+// status change goes through the transition table (job_state.hpp) and appends a `status`
+// event in the same transaction, so the event log and the record never disagree.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "server/job_record.hpp"
+#include "server/sqlite_db.hpp"
+
+namespace kontakt::server {
+
+/// Filters and cursor of GET /v1/jobs.
+struct JobQuery {
+  std::vector<JobStatus> statuses;                          ///< empty: any
+  std::vector<std::pair<std::string, std::string>> labels;  ///< every one must match
+  int limit = 50;
+  /// Resume after this (created_ms, id): the last row of the previous page.
+  std::optional<std::pair<std::int64_t, std::string>> after;
+};
+
+struct JobPage {
+  std::vector<JobRecord> jobs;
+  bool more = false;  ///< another page follows the last row
+};
+
+enum class InsertResult { Created, Replayed, KeyConflict };
+
+struct StoreCounts {
+  int queued = 0, running = 0, canceling = 0;
+  std::map<std::string, int> finished;  ///< by terminal status
+};
+
+struct RecoveryReport {
+  int requeued = 0, failed = 0, canceled = 0;
+};
+
+class JobStore {
+ public:
+  /// Opens (creating) the database and applies pending migrations.
+  explicit JobStore(const std::filesystem::path& db_file);
+
+  /// Inserts a queued job. With an idempotency key already used: Replayed (and that job) when
+  /// the fingerprint matches, KeyConflict otherwise.
+  std::pair<InsertResult, JobRecord> insert_job(const NewJob& job);
+  std::optional<JobRecord> find_job(const std::string& id);
+  std::optional<JobRecord> find_by_key(const std::string& idempotency_key);
+  JobPage list_jobs(const JobQuery& query);
+  /// 1-based place of a queued job in the queue (oldest first).
+  int queue_position(const JobRecord& job);
+
+  /// The oldest queued job, now running (attempts + 1); nullopt when the queue is empty.
+  std::optional<JobRecord> claim_next();
+  /// queued -> canceled, running -> canceling; other states unchanged. nullopt: no such job.
+  std::optional<JobRecord> request_cancel(const std::string& id);
+  /// Ends a run: running or canceling -> `to` (a canceling job always ends canceled), with the
+  /// summary and the published artifacts. False when the transition is not allowed.
+  bool finish_job(const std::string& id, JobStatus to, const std::string& reason,
+                  const std::string& message, const std::optional<JobSummary>& summary,
+                  const std::vector<Artifact>& artifacts);
+  /// running -> queued (drain); the attempt is not counted against the job.
+  bool requeue(const std::string& id);
+  /// After a crash: running jobs are requeued, or failed with reason worker_lost once they
+  /// have had `max_attempts` runs; canceling jobs end canceled.
+  RecoveryReport recover(int max_attempts);
+  enum class DeleteResult { Deleted, NotFound, NotFinished };
+  DeleteResult delete_job(const std::string& id);
+
+  /// Appends a solver event of the job's current run and, when given, its new progress.
+  std::int64_t append_event(const std::string& id, const std::string& kind,
+                            const std::string& data, const std::optional<JobProgress>& progress);
+  /// Events with seq > since, oldest first; `kinds` empty = every kind.
+  std::vector<StoredEvent> events_since(const std::string& id, std::int64_t since,
+                                        const std::vector<std::string>& kinds, int limit);
+  std::vector<Artifact> artifacts(const std::string& id);
+
+  StoreCounts counts();
+  /// Run times in seconds of every job that started and finished.
+  std::vector<double> run_durations();
+  std::vector<std::string> all_ids();
+
+  /// Grows with every committed change: SSE streams poll it instead of the database.
+  std::uint64_t generation() const { return generation_.load(); }
+
+ private:
+  class ReadLease;
+  ReadLease read();
+  bool transition(const std::string& id, JobStatus to, const std::string& reason,
+                  const std::string& message);  // caller holds writer_mutex_ in a transaction
+
+  std::filesystem::path file_;
+  std::mutex writer_mutex_;
+  SqliteDb writer_;
+  std::mutex readers_mutex_;
+  std::vector<std::unique_ptr<SqliteDb>> idle_readers_;
+  std::atomic<std::uint64_t> generation_{0};
+};
+
+/// Milliseconds since the Unix epoch.
+std::int64_t now_ms();
+
+}  // namespace kontakt::server

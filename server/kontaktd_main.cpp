@@ -1,0 +1,28 @@
+// kontaktd: the Kontakt job daemon (HTTP/JSON API in proto/openapi.yaml). Settings come
+// from KONTAKTD_* variables and the command line (`kontaktd --help`).
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+
+#include "server/daemon.hpp"
+
+int main(int argc, char** argv) {
+  using namespace kontakt::server;
+  const auto parsed = parse_settings(std::vector<std::string>(argv + 1, argv + argc),
+                                     [](const std::string& name) -> std::optional<std::string> {
+                                       const char* v = std::getenv(name.c_str());
+                                       return v ? std::optional<std::string>(v) : std::nullopt;
+                                     });
+  if (const auto* error = std::get_if<std::string>(&parsed)) {
+    const bool help = *error == "help";
+    if (!help) std::fprintf(stderr, "kontaktd: %s\n\n", error->c_str());
+    std::fputs(settings_usage().c_str(), help ? stdout : stderr);
+    return help ? 0 : 1;
+  }
+  try {
+    return run_daemon(std::get<Settings>(parsed));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kontaktd: %s\n", e.what());
+    return 1;
+  }
+}

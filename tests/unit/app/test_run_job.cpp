@@ -1,0 +1,111 @@
+// app::run_job and app::check_deck, the entry point `kontakt solve` and the daemon share.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "../analysis/cube_deck.hpp"
+#include "app/run_job.hpp"
+
+namespace fs = std::filesystem;
+
+namespace kontakt::app {
+
+namespace {
+
+struct Recorder final : analysis::EventSink {
+  std::vector<analysis::Event> events;
+  void on_event(const analysis::Event& e) override { events.push_back(e); }
+};
+
+class RunJobTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("kontakt-run-job-" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+  static std::string cube(const std::string& step_head, const std::string& procedure) {
+    return testing_decks::cube_model("*ELASTIC\n210000, 0.3\n") + testing_decks::kRollers +
+           step_head + procedure + "*CLOAD\nX1, 1, 100\n*NODE FILE\nU\n*END STEP\n";
+  }
+  RunRequest request(const fs::path& deck) {
+    return {.deck = deck, .out_dir = dir / "out", .job_name = "job", .threads = 1, .scheme = std::nullopt};
+  }
+  fs::path dir;
+  std::atomic<bool> no_cancel{false};
+};
+
+}  // namespace
+
+TEST_F(RunJobTest, ConvergedRunWritesEveryResultFileAndEndsWithDone) {
+  Recorder sink;
+  const RunOutcome r = run_job(request(write("c.inp", cube("*STEP\n", "*STATIC\n"))), sink, no_cancel);
+  EXPECT_EQ(r.status, RunStatus::Converged) << r.message;
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* ext : {".dat", ".hdf", ".xdmf", ".log.jsonl", ".sta", ".cvg"})
+    EXPECT_TRUE(fs::exists(dir / "out" / (std::string("job") + ext))) << ext;
+  ASSERT_FALSE(sink.events.empty());
+  EXPECT_EQ(sink.events.back().kind, analysis::Event::Kind::Done);
+  EXPECT_EQ(sink.events.back().status, "converged");
+}
+
+TEST_F(RunJobTest, InputErrorNamesFileLineAndKeyword) {
+  Recorder sink;
+  const fs::path deck = write("bad.inp", "*NODE\n1, 0, 0, 0\n*FROBNICATE\n");
+  const RunOutcome r = run_job(request(deck), sink, no_cancel);
+  EXPECT_EQ(r.status, RunStatus::InputError);
+  EXPECT_EQ(r.exit_code, 2);
+  ASSERT_TRUE(r.deck_error);
+  EXPECT_EQ(r.deck_error->line, 3);
+  EXPECT_EQ(r.deck_error->keyword, "*FROBNICATE");
+  EXPECT_EQ(fs::path(r.deck_error->file).filename(), "bad.inp");
+  ASSERT_FALSE(sink.events.empty());
+  EXPECT_EQ(sink.events.back().status, "input_error");
+  const DeckCheck check = check_deck(deck, std::nullopt);
+  ASSERT_TRUE(check.error);
+  EXPECT_EQ(check.error->line, 3);
+}
+
+TEST_F(RunJobTest, CheckDeckReportsStepsAndTotalTime) {
+  const fs::path deck = write("c.inp", cube("*STEP\n", "*STATIC\n") + "*STEP\n*STATIC\n0.5, 2.0\n*END STEP\n");
+  const DeckCheck check = check_deck(deck, std::nullopt);
+  ASSERT_FALSE(check.error) << check.error->message;
+  EXPECT_EQ(check.n_steps, 2);
+  EXPECT_DOUBLE_EQ(check.total_time, 3.0);
+}
+
+TEST_F(RunJobTest, UnknownSchemeIsAnInputError) {
+  const DeckCheck check = check_deck(write("c.inp", cube("*STEP\n", "*STATIC\n")), "gc5");
+  ASSERT_TRUE(check.error);
+  EXPECT_NE(check.error->message.find("gc5"), std::string::npos);
+  EXPECT_FALSE(check_deck(dir / "c.inp", "lgc12").error);
+}
+
+TEST_F(RunJobTest, RaisedCancelFlagStopsANonlinearRun) {
+  std::atomic<bool> cancel{true};
+  Recorder sink;
+  const RunOutcome r =
+      run_job(request(write("n.inp", cube("*STEP, NLGEOM\n", "*STATIC\n0.1, 1.0\n"))), sink, cancel);
+  EXPECT_EQ(r.status, RunStatus::Cancelled);
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(sink.events.back().status, "cancelled");
+  EXPECT_TRUE(fs::exists(dir / "out" / "job.hdf")) << "results are completed on cancel";
+}
+
+TEST_F(RunJobTest, UnwritableOutputIsAnError) {
+  Recorder sink;
+  RunRequest req = request(write("c.inp", cube("*STEP\n", "*STATIC\n")));
+  write("file", "x");
+  req.out_dir = dir / "file" / "sub";
+  const RunOutcome r = run_job(req, sink, no_cancel);
+  EXPECT_EQ(r.status, RunStatus::Error);
+  EXPECT_EQ(r.exit_code, 4);
+}
+
+}  // namespace kontakt::app

@@ -1,0 +1,295 @@
+// The API's routes in-process (no sockets): HttpRequest in, HttpResponse out.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "server/handlers/routes.hpp"
+#include "server_test_util.hpp"
+
+using nlohmann::json;
+
+namespace kontakt::server {
+
+namespace {
+
+class HandlerTest : public ::testing::Test {
+ protected:
+  testing::TempDir dir;
+  JobStore store{dir.path() / "jobs.db"};
+  JobFiles files{dir.path()};
+  testing::CountingControl control;
+  handlers::ApiContext ctx{.store = store, .files = files, .control = control,
+                           .max_unpacked = 1 << 20};
+  Router router = handlers::make_router(ctx);
+
+  HttpResponse call(const std::string& method, const std::string& path, std::string body = {},
+                    std::map<std::string, std::string> headers = {},
+                    std::vector<std::pair<std::string, std::string>> query = {}) {
+    HttpRequest r;
+    r.method = method;
+    r.path = path;
+    r.body = std::move(body);
+    r.headers = std::move(headers);
+    r.query = std::move(query);
+    return router.handle(r);
+  }
+  HttpResponse submit(const std::string& deck, std::vector<std::pair<std::string, std::string>> query = {},
+                      std::map<std::string, std::string> headers = {{"content-type", "text/plain"}}) {
+    return call("POST", "/v1/jobs", deck, std::move(headers), std::move(query));
+  }
+  static json body(const HttpResponse& r) { return json::parse(r.body); }
+};
+
+/// The cube deck with line `line` (1-based) replaced.
+std::string cube_with_line(int line, const std::string& text) {
+  std::string deck = testing::cube_deck(), out;
+  int n = 1;
+  std::size_t start = 0;
+  while (start < deck.size()) {
+    const std::size_t end = deck.find('\n', start);
+    out += (n == line ? text : deck.substr(start, end - start)) + "\n";
+    start = end + 1;
+    ++n;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_F(HandlerTest, SubmitQueuesAParsedDeck) {
+  const auto r = submit(testing::cube_deck(), {{"name", "cube"}, {"label", "sweep=s1"}});
+  ASSERT_EQ(r.status, 201) << r.body;
+  const json job = body(r);
+  EXPECT_EQ(job["status"], "queued");
+  EXPECT_EQ(job["name"], "cube");
+  EXPECT_EQ(job["labels"]["sweep"], "s1");
+  EXPECT_EQ(job["progress"]["steps_total"], 1);
+  EXPECT_EQ(job["queue_position"], 1);
+  EXPECT_EQ(r.header("Location"), "/v1/jobs/" + job["id"].get<std::string>());
+  EXPECT_EQ(control.queued, 1);
+  EXPECT_TRUE(std::filesystem::exists(files.input_dir(job["id"]) / "deck.inp"));
+  EXPECT_EQ(call("GET", "/v1/jobs/" + job["id"].get<std::string>()).status, 200);
+}
+
+TEST_F(HandlerTest, BadDecksAre422NamingFileLineAndKeyword) {
+  struct Case { int line; std::string text; std::string keyword; };
+  const std::vector<Case> cases{
+      {10, "*ELEMENT, TYPE=C3D99, ELSET=EALL", "*ELEMENT"},   // unknown element type
+      {2, "2,1,zero,0", "*NODE"},                            // not a number
+      {11, "1,1,2,3,4,5,6,7,99", "*ELEMENT"},                // unknown node
+      {23, "*CLOAD, AMPLITUDE=NOPE", "*CLOAD"},               // unknown amplitude
+      {12, "*MATERIAL", "*MATERIAL"},                         // missing NAME=
+  };
+  for (const Case& c : cases) {
+    const auto r = submit(cube_with_line(c.line, c.text), {{"main", "bad.inp"}});
+    ASSERT_EQ(r.status, 422) << c.text << ": " << r.body;
+    EXPECT_EQ(r.content_type, "application/problem+json");
+    const json problem = body(r);
+    EXPECT_EQ(problem["code"], "input_error");
+    ASSERT_EQ(problem["errors"].size(), 1u);
+    const json& e = problem["errors"][0];
+    EXPECT_EQ(e["file"], "bad.inp") << c.text;
+    EXPECT_EQ(e["line"], c.line) << c.text << ": " << e["message"];
+    EXPECT_EQ(e["keyword"], c.keyword) << c.text;
+    EXPECT_EQ(e["message"].get<std::string>().find(dir.path().string()), std::string::npos)
+        << "server paths leak: " << e["message"];
+  }
+  EXPECT_EQ(control.queued, 0);
+  EXPECT_TRUE(files.folder_ids().empty()) << "refused uploads leave no folder";
+}
+
+TEST_F(HandlerTest, BadOptionsAre400NamingTheField) {
+  EXPECT_EQ(body(submit(testing::cube_deck(), {{"scheme", "gc5"}}))["field"], "scheme");
+  EXPECT_EQ(body(submit(testing::cube_deck(), {{"label", "novalue"}}))["field"], "label");
+  EXPECT_EQ(body(submit(testing::cube_deck(), {{"label", "bad key=v"}}))["field"], "labels");
+  EXPECT_EQ(body(submit(testing::cube_deck(), {{"main", "../x.inp"}}))["field"], "main");
+  EXPECT_EQ(body(submit(""))["field"], "body");
+  EXPECT_EQ(submit(testing::cube_deck(), {}, {{"content-type", "image/png"}}).status, 415);
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"limit", "0"}}).status, 400);
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"status", "done"}}).status, 400);
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"page_token", "x"}}).status, 400);
+}
+
+TEST_F(HandlerTest, AcceptedSchemeOverrideIsStored) {
+  const auto r = submit(testing::cube_deck(), {{"scheme", "LGC7"}});
+  ASSERT_EQ(r.status, 201);
+  EXPECT_EQ(body(r)["scheme"], "LGC7");
+}
+
+TEST_F(HandlerTest, JsonSubmission) {
+  const json request{{"deck", testing::cube_deck()}, {"name", "j"}, {"labels", {{"k", "v"}}}};
+  const auto r = submit(request.dump(), {}, {{"content-type", "application/json"}});
+  ASSERT_EQ(r.status, 201) << r.body;
+  EXPECT_EQ(body(r)["labels"]["k"], "v");
+  EXPECT_EQ(submit("[1]", {}, {{"content-type", "application/json"}}).status, 400);
+}
+
+TEST_F(HandlerTest, ZipWithIncludesAndMain) {
+  const std::string mesh = "*NODE, NSET=NALL\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n";
+  std::string main = testing::cube_deck();
+  main.replace(0, mesh.size(), "*INCLUDE, INPUT=mesh/nodes.inp\n");
+  const std::string zip = testing::make_zip({{"model.inp", main}, {"mesh/nodes.inp", mesh}}, dir.path());
+  const auto r = submit(zip, {}, {{"content-type", "application/zip"}});
+  ASSERT_EQ(r.status, 201) << r.body;
+  EXPECT_EQ(body(r)["main"], "model.inp");
+  // Two decks at the top: ?main= decides.
+  const std::string two = testing::make_zip({{"a.inp", testing::cube_deck()}, {"b.inp", "junk"}}, dir.path());
+  EXPECT_EQ(body(submit(two, {}, {{"content-type", "application/zip"}}))["field"], "main");
+  EXPECT_EQ(submit(two, {{"main", "a.inp"}}, {{"content-type", "application/zip"}}).status, 201);
+}
+
+TEST_F(HandlerTest, UnsafeZipsAreRefused) {
+  const std::vector<std::vector<testing::ZipItem>> unsafe{
+      {{"../evil.inp", "x"}},
+      {{"/etc/evil.inp", "x"}},
+      {{"a/../../evil.inp", "x"}},
+      {{"deck.inp", testing::cube_deck()}, {"link.inp", "/etc/passwd", true}},
+  };
+  for (const auto& items : unsafe) {
+    const auto r = submit(testing::make_zip(items, dir.path()), {{"main", "deck.inp"}},
+                          {{"content-type", "application/zip"}});
+    EXPECT_EQ(r.status, 400) << items.back().name << ": " << r.body;
+  }
+  EXPECT_EQ(submit("not a zip", {}, {{"content-type", "application/zip"}}).status, 400);
+  EXPECT_TRUE(files.folder_ids().empty());
+}
+
+TEST_F(HandlerTest, IncludesMayNotLeaveTheUpload) {
+  for (const char* target : {"/etc/passwd", "../other/deck.inp", "sub/../../x.inp"}) {
+    const auto r = submit("*INCLUDE, INPUT=" + std::string(target) + "\n" + testing::cube_deck());
+    ASSERT_EQ(r.status, 422) << target;
+    EXPECT_EQ(body(r)["errors"][0]["line"], 1);
+    EXPECT_EQ(body(r)["errors"][0]["keyword"], "*INCLUDE");
+  }
+}
+
+TEST_F(HandlerTest, IdempotencyKey) {
+  const std::map<std::string, std::string> h{{"content-type", "text/plain"}, {"idempotency-key", "k1"}};
+  const auto first = submit(testing::cube_deck(), {}, h);
+  const auto again = submit(testing::cube_deck(), {}, h);
+  ASSERT_EQ(again.status, 201);
+  EXPECT_EQ(body(again)["id"], body(first)["id"]);
+  EXPECT_EQ(again.header("Idempotent-Replayed"), "true");
+  const auto other = submit(testing::cube_deck() + "** changed\n", {}, h);
+  EXPECT_EQ(other.status, 422);
+  EXPECT_EQ(body(other)["code"], "idempotency_key_reused");
+  EXPECT_EQ(control.queued, 1);
+}
+
+TEST_F(HandlerTest, UnknownJobsAndRoutes) {
+  const std::string id(32, 'a');
+  for (const std::string suffix : {"", "/events", "/iterations", "/increments", "/results",
+                                   "/results/x.hdf", "/summary"})
+    EXPECT_EQ(call("GET", "/v1/jobs/" + id + suffix).status, 404) << suffix;
+  EXPECT_EQ(call("POST", "/v1/jobs/" + id + "/cancel").status, 404);
+  EXPECT_EQ(call("DELETE", "/v1/jobs/" + id).status, 404);
+  EXPECT_EQ(call("GET", "/v2/nothing").status, 404);
+  const auto r = call("PUT", "/v1/jobs");
+  EXPECT_EQ(r.status, 405);
+  EXPECT_TRUE(r.header("Allow"));
+}
+
+TEST_F(HandlerTest, CancelIsIdempotentAndDeleteNeedsAFinishedJob) {
+  const std::string id = body(submit(testing::cube_deck()))["id"];
+  EXPECT_EQ(call("DELETE", "/v1/jobs/" + id).status, 409);
+  const auto first = call("POST", "/v1/jobs/" + id + "/cancel");
+  EXPECT_EQ(first.status, 200);
+  EXPECT_EQ(body(first)["status"], "canceled");
+  EXPECT_EQ(call("POST", "/v1/jobs/" + id + "/cancel").status, 200);
+  EXPECT_EQ(call("DELETE", "/v1/jobs/" + id).status, 204);
+  EXPECT_FALSE(std::filesystem::exists(files.job_dir(id)));
+  EXPECT_EQ(call("GET", "/v1/jobs/" + id).status, 404);
+}
+
+TEST_F(HandlerTest, CancelOfARunningJobRaisesItsFlag) {
+  const std::string id = body(submit(testing::cube_deck()))["id"];
+  store.claim_next();
+  const auto r = call("POST", "/v1/jobs/" + id + "/cancel");
+  EXPECT_EQ(r.status, 202);
+  EXPECT_EQ(body(r)["status"], "canceling");
+  ASSERT_EQ(control.canceled.size(), 1u);
+  EXPECT_EQ(control.canceled[0], id);
+}
+
+TEST_F(HandlerTest, ListFiltersAndPages) {
+  for (int i = 0; i < 5; ++i) submit(testing::cube_deck(), {{"label", i % 2 ? "odd=1" : "odd=0"}});
+  const auto page1 = call("GET", "/v1/jobs", "", {}, {{"limit", "3"}});
+  ASSERT_EQ(page1.status, 200);
+  const json p1 = body(page1);
+  EXPECT_EQ(p1["jobs"].size(), 3u);
+  ASSERT_TRUE(p1["next_page_token"].is_string());
+  EXPECT_NE(page1.header("Link")->find("rel=\"next\""), std::string::npos);
+  const json p2 = body(call("GET", "/v1/jobs", "", {}, {{"limit", "3"}, {"page_token", p1["next_page_token"]}}));
+  EXPECT_EQ(p2["jobs"].size(), 2u);
+  EXPECT_TRUE(p2["next_page_token"].is_null());
+  EXPECT_EQ(body(call("GET", "/v1/jobs", "", {}, {{"label", "odd=1"}}))["jobs"].size(), 2u);
+  EXPECT_EQ(body(call("GET", "/v1/jobs", "", {}, {{"status", "running,failed"}}))["jobs"].size(), 0u);
+}
+
+TEST_F(HandlerTest, EventsTablesAndStream) {
+  const std::string id = body(submit(testing::cube_deck()))["id"];
+  store.claim_next();
+  store.append_event(id, "iteration", R"({"event":"iteration","iteration":1})", std::nullopt);
+  store.append_event(id, "increment", R"({"event":"increment","increment":1})", std::nullopt);
+  const json its = body(call("GET", "/v1/jobs/" + id + "/iterations"));
+  ASSERT_EQ(its["iterations"].size(), 1u);
+  const int since = its["next_since"];
+  EXPECT_EQ(body(call("GET", "/v1/jobs/" + id + "/iterations", "", {}, {{"since", std::to_string(since)}}))["iterations"].size(), 0u);
+  const json incs = body(call("GET", "/v1/jobs/" + id + "/increments"));
+  ASSERT_EQ(incs["increments"].size(), 1u);
+  EXPECT_EQ(incs["increments"][0]["converged"], true);
+  const auto stream = call("GET", "/v1/jobs/" + id + "/events", "", {{"last-event-id", "3"}});
+  ASSERT_TRUE(stream.events);
+  EXPECT_EQ(stream.events->after_seq, 3);
+  EXPECT_EQ(stream.content_type, "text/event-stream");
+  EXPECT_EQ(call("GET", "/v1/jobs/" + id + "/events", "", {{"last-event-id", "x"}}).status, 400);
+}
+
+TEST_F(HandlerTest, DownloadsWithEtagAndRange) {
+  const std::string id = body(submit(testing::cube_deck()))["id"];
+  store.claim_next();
+  std::filesystem::create_directories(files.results_dir(id));
+  std::ofstream(files.results_dir(id) / "deck.sta") << "0123456789";
+  const std::string sha = "84d89877f0d4041efb6bf91a16f0248f2fd573e6af05c19f96bedb9f882f7882";
+  store.finish_job(id, JobStatus::Succeeded, "", "", std::nullopt, {{"deck.sta", "text/plain", 10, sha}});
+  const json list = body(call("GET", "/v1/jobs/" + id + "/results"));
+  EXPECT_EQ(list["artifacts"][0]["sha256"], sha);
+  const auto whole = call("GET", "/v1/jobs/" + id + "/results/deck.sta");
+  ASSERT_TRUE(whole.file);
+  EXPECT_EQ(whole.file->length, 10u);
+  EXPECT_EQ(whole.header("ETag"), "\"" + sha + "\"");
+  const auto part = call("GET", "/v1/jobs/" + id + "/results/deck.sta", "", {{"range", "bytes=2-4"}});
+  EXPECT_EQ(part.status, 206);
+  EXPECT_EQ(part.file->offset, 2u);
+  EXPECT_EQ(part.file->length, 3u);
+  EXPECT_EQ(part.header("Content-Range"), "bytes 2-4/10");
+  EXPECT_EQ(call("GET", "/v1/jobs/" + id + "/results/deck.sta", "", {{"range", "bytes=20-"}}).status, 416);
+  EXPECT_EQ(call("GET", "/v1/jobs/" + id + "/results/deck.sta", "", {{"if-none-match", "\"" + sha + "\""}}).status, 304);
+  EXPECT_EQ(call("GET", "/v1/jobs/" + id + "/results/..%2Fjobs.db").status, 404);
+  EXPECT_EQ(call("GET", "/v1/jobs/" + id + "/results/input").status, 404);
+}
+
+TEST_F(HandlerTest, BearerTokens) {
+  router.require_tokens({"s3cret"}, {"/healthz"});
+  EXPECT_EQ(call("GET", "/v1/jobs").status, 401);
+  EXPECT_TRUE(call("GET", "/v1/jobs").header("WWW-Authenticate"));
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {{"authorization", "Bearer wrong"}}).status, 401);
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {{"authorization", "Bearer s3cret"}}).status, 200);
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"access_token", "s3cret"}}).status, 200);
+  EXPECT_EQ(call("GET", "/healthz").status, 200);
+}
+
+TEST_F(HandlerTest, ServiceEndpoints) {
+  const json health = body(call("GET", "/healthz"));
+  EXPECT_EQ(health["status"], "ok");
+  const auto metrics = call("GET", "/metrics");
+  EXPECT_NE(metrics.body.find("kontakt_jobs_queued 0"), std::string::npos);
+  EXPECT_NE(metrics.body.find("kontakt_job_duration_seconds_bucket{le=\"+Inf\"} 0"), std::string::npos);
+  const json spec = body(call("GET", "/v1/openapi.json"));
+  EXPECT_EQ(spec["openapi"], "3.1.0");
+  EXPECT_TRUE(spec["components"]["schemas"].contains("Job"));
+  const auto page = call("GET", "/");
+  EXPECT_EQ(page.content_type.rfind("text/html", 0), 0u);
+}
+
+}  // namespace kontakt::server
