@@ -59,10 +59,11 @@ material::HardeningTable hardening_of(const model::Model& model, const model::El
 }
 
 /// One element's tangent, internal force and point output: total Lagrangian under NLGEOM,
-/// J2 return mapping for plastic materials, linear elasticity otherwise.
+/// J2 return mapping for plastic materials, linear elasticity otherwise (whose constant
+/// stiffness is skipped when `K` is null).
 void element_response(const model::Model& model, const model::Element& el, bool nlgeom,
                       const VecX& u, const VecX& dT, const std::vector<material::J2State>& committed,
-                      MatX& K, VecX& f_int, ElementOutput& out,
+                      MatX* K, VecX& f_int, ElementOutput& out,
                       std::vector<material::J2State>& trial) {
   const MatX3 X = element_coords(model, el), ue = element_displacements(el, u);
   const VecX dTe = element_values(el, dT);
@@ -70,20 +71,20 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   if (nlgeom) {
     element::NlgeomResult r;
     element::nlgeom_element(el.type, X, mat, ue, dTe, true, r);
-    K = std::move(r.tangent);
+    *K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
     out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density), VecX()};
   } else if (!element_material_def(model, el).plastic.empty()) {
     element::PlasticResult r;
     element::plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed, true, r);
-    K = std::move(r.tangent);
+    *K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
     trial = std::move(r.state);
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), std::move(r.peeq)};
   } else {
     element::IpResults r;
     element::recover(el.type, X, mat, ue, dTe, r);
-    element::linear_stiffness(el.type, X, mat, K);
+    if (K) element::linear_stiffness(el.type, X, mat, *K);
     f_int = std::move(r.internal_force);
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};
   }
@@ -96,30 +97,60 @@ struct ContactEvaluation {
   int evaluations = 0;
 };
 
+/// The assembled stiffness of linear elements (small strain, elastic), which stays the same
+/// through a step: assembled once per pattern generation and reused, so iterations (contact)
+/// only recompute element forces.
+struct LinearElementCache {
+  bool usable = false;          ///< every element of the step is linear
+  std::uint64_t generation = 0;  ///< pattern the values belong to (0: none yet)
+  std::vector<Real> values;
+};
+
 /// Assembles the tangent and residual at `u` (full dof vector) with temperatures `dT`. A
 /// nonzero `prescribed_step` (per prescribed slot) moves the constrained dofs within the
 /// linearised system (-K g on the right-hand side), so the free dofs follow them at once.
 Evaluation evaluate(const model::Model& model, const assembly::AssemblyPlan& plan, bool nlgeom,
                     const PointStates& committed, const VecX& u, const VecX& dT,
                     const VecX& f_ext, const VecX& prescribed_step, ContactEvaluation& contact,
-                    int threads) {
+                    LinearElementCache& cache, int threads) {
   const auto& elements = model.mesh.elements;
   Evaluation ev;
   std::vector<VecX> f_el(elements.size());
   ev.outputs.resize(elements.size());
   ev.trial.resize(elements.size());
-  // The assembler scatters K and -f_int (as the element "load").
-  assembly::assemble(
-      model, plan, prescribed_step,
-      [&](int e, MatX& K, VecX& f) {
-        const auto& el = elements[e];
-        naming_element(el, [&] {
-          element_response(model, el, nlgeom, u, dT, committed[e], K, f_el[e], ev.outputs[e],
-                           ev.trial[e]);
-        });
-        f = -f_el[e];
-      },
-      threads, ev.system);
+  const bool reuse = cache.usable && cache.generation == plan.generation &&
+                     (prescribed_step.size() == 0 || prescribed_step.isZero());
+  if (reuse) {
+    ev.system.values = cache.values;
+    assembly::assemble_loads(
+        model, plan,
+        [&](int e, VecX& f) {
+          const auto& el = elements[e];
+          naming_element(el, [&] {
+            element_response(model, el, nlgeom, u, dT, committed[e], nullptr, f_el[e],
+                             ev.outputs[e], ev.trial[e]);
+          });
+          f = -f_el[e];
+        },
+        threads, ev.system.rhs);
+  } else {
+    // The assembler scatters K and -f_int (as the element "load").
+    assembly::assemble(
+        model, plan, prescribed_step,
+        [&](int e, MatX& K, VecX& f) {
+          const auto& el = elements[e];
+          naming_element(el, [&] {
+            element_response(model, el, nlgeom, u, dT, committed[e], &K, f_el[e], ev.outputs[e],
+                             ev.trial[e]);
+          });
+          f = -f_el[e];
+        },
+        threads, ev.system);
+    if (cache.usable) {
+      cache.values = ev.system.values;
+      cache.generation = plan.generation;
+    }
+  }
   ev.internal_force = VecX::Zero(u.size());
   Real sum = 0;
   Index count = 0;
@@ -268,6 +299,8 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   Real max_contact_pressure = 0, total_contact_force = 0;
   int total_iterations = 0, drift_redos = 0;
   contact::ContactSystem contact(model);
+  bool any_plastic = false;
+  for (const auto& m : model.materials) any_plastic |= !m.plastic.empty();
   const contact::ContactRules contact_rules = contact.rules();
   ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
@@ -309,6 +342,8 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
       return f;
     };
 
+    LinearElementCache element_cache;
+    element_cache.usable = !step.nlgeom && !any_plastic;
     const nonlinear::SolutionControls controls = contact_controls(
         options.controls ? *options.controls : step.controls, contact_rules, step.contact_controls);
     nonlinear::Convergence convergence(controls, last_q_bar);
@@ -353,7 +388,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         try {
           if (it == 1) {
             ev = evaluate(model, plan, step.nlgeom, committed, u_trial, dT, loads_at(t, u_trial),
-                          g - g_old, contact_eval, threads);
+                          g - g_old, contact_eval, element_cache, threads);
             convergence.begin_increment(contact.empty() ? -1 : contact.n_active());
             first_evaluated = true;
           }
@@ -363,7 +398,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
           x_trial = x_old + dx;
           VecX u_new = dofs.expand(x_trial, g);
           ev = evaluate(model, plan, step.nlgeom, committed, u_new, dT, loads_at(t, u_new),
-                        no_step, contact_eval, threads);
+                        no_step, contact_eval, element_cache, threads);
           if (line_search && it > 1 && contact.n_active() > 0) {
             // The root of the residual's projection on dx, from its values at both ends.
             const Real r0 = dx.dot(rhs_old), r1 = dx.dot(ev.system.rhs);
@@ -374,7 +409,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
               x_trial = x_old + eta * dx;
               u_new = dofs.expand(x_trial, g);
               ev = evaluate(model, plan, step.nlgeom, committed, u_new, dT, loads_at(t, u_new),
-                            no_step, contact_eval, threads);
+                            no_step, contact_eval, element_cache, threads);
             }
           }
           const Real c_max = max_abs(u_new - u_trial);

@@ -1,14 +1,23 @@
 #include "assembly/assembler.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 #include "core/parallel.hpp"
 
 namespace kontakt::assembly {
 
+namespace {
+std::uint64_t next_generation() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+}  // namespace
+
 AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symmetric,
                        int threads) {
   AssemblyPlan plan;
+  plan.generation = next_generation();
   plan.dofs = &dofs;
   plan.element_eqs = element_equations(model, dofs);
   plan.pattern = build_pattern(plan.element_eqs, dofs.n_equations(), symmetric, threads);
@@ -22,6 +31,7 @@ void set_groups(AssemblyPlan& plan, std::vector<std::vector<int>> groups, int th
       plan.groups.empty() ? plan.element_eqs
                           : concatenate(plan.element_eqs, group_equations(plan.groups, *plan.dofs));
   plan.pattern = build_pattern(all, plan.dofs->n_equations(), plan.pattern.upper, threads);
+  plan.generation = next_generation();
 }
 
 namespace {
@@ -75,6 +85,28 @@ void assemble(const model::Model& model, const AssemblyPlan& plan,
         const int e = colour[k];
         kernel(e, K, f);
         scatter_element(elements[e].nodes, dofs, plan.pattern, prescribed_values, K, f, out);
+      }
+    });
+  }
+}
+
+void assemble_loads(const model::Model& model, const AssemblyPlan& plan,
+                    const ElementLoadKernel& kernel, int threads, VecX& rhs) {
+  const DofMap& dofs = *plan.dofs;
+  rhs = VecX::Zero(dofs.n_equations());
+  const auto& elements = model.mesh.elements;
+  for (const auto& colour : plan.colours) {
+    parallel_chunks(colour.size(), threads, [&](std::size_t begin, std::size_t end, int) {
+      VecX f;
+      for (std::size_t k = begin; k < end; ++k) {
+        const int e = colour[k];
+        kernel(e, f);
+        const auto& nodes = elements[e].nodes;
+        for (std::size_t a = 0; a < 3 * nodes.size(); ++a) {
+          const int d = 3 * nodes[a / 3] + static_cast<int>(a % 3);
+          for (auto t = dofs.terms_begin(d); t != dofs.terms_end(d); ++t)
+            if (!t->is_prescribed) rhs[t->index] += t->coef * f[a];
+        }
       }
     });
   }

@@ -1,6 +1,7 @@
 // Scatter of element contributions into the reduced system T^T K T x = T^T (f - K g).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct ReducedSystem {
 /// Fills the element's stiffness K (3n x 3n) and load vector f (3n) for element e; called
 /// concurrently from several threads with distinct elements.
 using ElementKernel = std::function<void(int e, MatX& K, VecX& f)>;
+/// The same for the load vector alone.
+using ElementLoadKernel = std::function<void(int e, VecX& f)>;
 
 /// Everything assembly needs that stays fixed while the constraint structure holds.
 struct AssemblyPlan {
@@ -29,6 +32,8 @@ struct AssemblyPlan {
   /// Node groups beyond the elements (contact: slave nodes with one master face) that the
   /// pattern includes; scattered by scatter_groups().
   std::vector<std::vector<int>> groups;
+  /// Changes whenever the pattern does: values assembled for one generation fit only it.
+  std::uint64_t generation = 0;
 };
 AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symmetric,
                        int threads);
@@ -40,6 +45,11 @@ void set_groups(AssemblyPlan& plan, std::vector<std::vector<int>> groups, int th
 void assemble(const model::Model& model, const AssemblyPlan& plan,
               const VecX& prescribed_values, const ElementKernel& kernel, int threads,
               ReducedSystem& out);
+
+/// Assembles only the element load vectors into `rhs` (overwritten): for residuals whose
+/// stiffness is known already.
+void assemble_loads(const model::Model& model, const AssemblyPlan& plan,
+                    const ElementLoadKernel& kernel, int threads, VecX& rhs);
 
 /// Adds the stiffness K[g] and load f[g] of every node group g of the plan (dof order: the
 /// group's nodes, x, y, z each) into `out`, after assemble().

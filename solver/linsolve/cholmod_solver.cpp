@@ -1,19 +1,33 @@
 // CHOLMOD (supernodal Cholesky) for symmetric positive definite systems, int64 interface.
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "linsolve/blas_threads.hpp"
 #include "linsolve/linear_solver.hpp"
 
 namespace kontakt::linsolve {
 
 namespace {
 
+/// CHOLMOD's supernodal numeric factorisation opens an OpenMP region with a compile-time 4
+/// threads for every supernode's scatter; on small machines that is oversubscription and a
+/// futex round trip per supernode, which dominated factorisations in Newton loops. The
+/// regions are serialised (OpenMP's max-active-levels 0); the dense work of each supernode
+/// still runs in the threaded BLAS.
+void serialise_cholmod_openmp() {
+  using SetLevels = void (*)(int);
+  if (auto fn = reinterpret_cast<SetLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels")))
+    fn(0);
+}
+
 class CholmodSolver final : public LinearSolver {
  public:
   CholmodSolver() {
+    serialise_cholmod_openmp();
     cholmod_l_start(&common_);
     common_.print = 0;  // failures are reported through exceptions, not stderr
   }
@@ -39,11 +53,13 @@ class CholmodSolver final : public LinearSolver {
     L_ = cholmod_l_analyze(A_, &common_);
     KONTAKT_REQUIRE(L_ != nullptr && common_.status >= CHOLMOD_OK,
                     "CHOLMOD symbolic analysis failed");
+    flops_ = common_.fl;
   }
 
   void factorize(const std::vector<Real>& values) override {
     KONTAKT_REQUIRE(A_ != nullptr && L_ != nullptr, "CHOLMOD: factorize before analyze");
     std::copy(values.begin(), values.end(), static_cast<double*>(A_->x));
+    use_blas_threads_for(flops_);
     cholmod_l_factorize(A_, L_, &common_);
     if (common_.status == CHOLMOD_NOT_POSDEF) {
       const auto* perm = static_cast<const SuiteSparse_long*>(L_->Perm);
@@ -81,6 +97,7 @@ class CholmodSolver final : public LinearSolver {
   cholmod_common common_{};
   cholmod_sparse* A_ = nullptr;
   cholmod_factor* L_ = nullptr;
+  double flops_ = 0;  ///< of one numeric factorisation, from the analysis
 };
 
 }  // namespace
