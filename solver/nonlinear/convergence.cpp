@@ -115,7 +115,10 @@ Verdict Convergence::check(int iteration, const IterationMeasures& m) {
       !finite || r > kBlowUp ||
       (surface ? surface_divergence(iteration, r, c1 * q)
                : iteration >= divergence_from_ && r1_ > r2 && r > r2 && r > c1 * q);
-  if (finite && iteration > 1 && r <= c1 * q && !changed && small_correction) {
+  // ccx always iterates twice; an iteration 1 that leaves only a round-off residual (the
+  // linear case R_l) with an unchanged contact set has solved the increment already.
+  const bool solved_at_once = iteration == 1 && r <= c_.linear_residual_ratio * q;
+  if (finite && (iteration > 1 || solved_at_once) && r <= c1 * q && !changed && small_correction) {
     v.kind = Verdict::Kind::Converged;
   } else if (diverging) {
     v.kind = Verdict::Kind::Cutback;

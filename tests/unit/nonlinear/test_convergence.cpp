@@ -15,12 +15,21 @@ IterationMeasures measures(Real q_bar, Real r_max, Real c_max, int contact_eleme
 }
 }  // namespace
 
-TEST(Convergence, LinearProblemConvergesInExactlyTwoIterations) {
+TEST(Convergence, IterationOneConvergesOnlyWithARoundOffResidual) {
+  // A linear problem is solved by iteration 1 (ccx would still do a second iteration).
+  Convergence solved({}, 0);
+  solved.begin_increment();
+  EXPECT_EQ(solved.check(1, measures(100, 0, 1.0)).kind, Kind::Converged);
+  // A residual within R_n but above the round-off level R_l needs iteration 2.
   Convergence conv({}, 0);
   conv.begin_increment();
-  // Iteration 1 of a linear problem already has a zero residual, but ccx always does two.
-  EXPECT_EQ(conv.check(1, measures(100, 0, 1.0)).kind, Kind::Iterate);
+  EXPECT_EQ(conv.check(1, measures(100, 0.1, 1.0)).kind, Kind::Iterate);
   EXPECT_EQ(conv.check(2, measures(100, 5e-7, 1e-12)).kind, Kind::Converged);
+  // A changed contact set keeps iterating even with no residual.
+  Convergence contact({}, 0);
+  contact.set_contact_criteria(ContactCriteria::SurfaceToSurface, 1e-3);
+  contact.begin_increment(10);
+  EXPECT_EQ(contact.check(1, measures(100, 0, 1.0, 12)).kind, Kind::Iterate);
 }
 
 TEST(Convergence, ResidualMustBeBelowTheToleranceTimesTheForceAverage) {
