@@ -41,6 +41,7 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
     pair.def = &def;
     pair.scheme = def.scheme;
     pair.behavior = model.interactions.at(def.interaction).behavior;
+    pair.law = make_pressure_law(pair.behavior, pair.scheme.linear);
     pair.slave = make_contact_surface(model, model.surfaces.at(def.slave));
     pair.master = make_contact_surface(model, model.surfaces.at(def.master));
     if (pair.master.faces.empty())
@@ -70,11 +71,12 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
   }
 }
 
-ContactRules ContactSystem::rules() const {
-  if (pairs_.empty()) return ContactRules::None;
+nonlinear::ContactCriteria ContactSystem::criteria() const {
+  using C = nonlinear::ContactCriteria;
+  if (pairs_.empty()) return C::None;
   for (const auto& p : pairs_)
-    if (p.scheme.kind == Kind::NodeToSurface || !p.scheme.linear) return ContactRules::NodeToSurface;
-  return ContactRules::SurfaceToSurface;
+    if (p.scheme.kind == Kind::NodeToSurface || !p.scheme.linear) return C::NodeToSurface;
+  return C::SurfaceToSurface;
 }
 
 ContactSystem::UnitGeometry ContactSystem::geometry(const Unit& unit, const VecX& u) const {
@@ -198,9 +200,9 @@ void ContactSystem::pair_point(const Unit& unit, const UnitGeometry& g, Point& p
     // Nonlinear variants: the contact element exists when the point is within the creation
     // clearance (c0 sqrt(A)), judged at pairing and kept until the next pairing, and so is
     // its area (as ccx regenerates its node-to-face elements).
-    const PressureLaw law = make_pressure_law(pair.behavior, false, stiffness_scale_);
     pt.area = point_area(unit, pt, g, u);
-    pt.exists = is_active(law, -(pt.gap + gap_offset(pt)), creation_clearance(pair.behavior, pt.area));
+    pt.exists = is_active(pair.law, -(pt.gap + gap_offset(pt)),
+                          creation_clearance(pair.behavior, pt.area));
   }
 }
 
@@ -275,7 +277,7 @@ std::pair<Real, Index> ContactSystem::evaluate_unit(Unit& unit, const VecX& u, b
   std::pair<Real, Index> force{0, 0};
   if (unit.points.empty()) return force;
   const UnitGeometry g = geometry(unit, u);
-  const PressureLaw law = make_pressure_law(pair.behavior, pair.scheme.linear, stiffness_scale_);
+  const PressureLaw& law = pair.law;
   PointResponse r;
   for (Point& pt : unit.points) {
     pt.active = false;

@@ -19,6 +19,7 @@
 #include "contact/contact_surface.hpp"
 #include "contact/point_kernel.hpp"
 #include "model/model.hpp"
+#include "nonlinear/convergence.hpp"
 #include "output/frame.hpp"
 
 namespace kontakt::contact {
@@ -28,13 +29,6 @@ struct IncrementContext {
   int increment = 1;            ///< 1-based within the step
   Real fraction_start = 0;      ///< step fraction reached when the increment starts
   Real fraction_end = 1;        ///< step fraction at its end
-};
-
-/// How the driver should judge convergence with this contact (ccx-behaviour.md section 3.5).
-enum class ContactRules {
-  None,             ///< no contact pairs
-  NodeToSurface,    ///< ccx node-to-face rules (also the nonlinear surface-to-surface variants)
-  SurfaceToSurface  ///< ccx face-to-face rules (the linear variants)
 };
 
 /// One group's share of the tangent and internal force, over its nodes (x, y, z each).
@@ -49,7 +43,10 @@ class ContactSystem {
   explicit ContactSystem(const model::Model& model);
 
   bool empty() const { return pairs_.empty(); }
-  ContactRules rules() const;
+  /// How the driver judges convergence with these pairs (ccx-behaviour.md section 3.5): ccx's
+  /// face-to-face rules for the linear variants, node-to-face rules when any pair is nts or a
+  /// nonlinear variant, None without pairs.
+  nonlinear::ContactCriteria criteria() const;
 
   void begin_increment(const VecX& u, const IncrementContext& ctx, int threads);
   /// Node lists of the contact groups of this increment (slave nodes first, then the master
@@ -70,10 +67,6 @@ class ContactSystem {
   /// Total normal contact force (sum of pressure * area) and the largest pressure.
   Real total_normal_force() const;
   Real max_pressure() const;
-
-  /// Divides the penalty stiffness by `scale` (ccx's softening after face-to-face divergence).
-  void set_stiffness_scale(Real scale) { stiffness_scale_ = scale; }
-  Real stiffness_scale() const { return stiffness_scale_; }
 
   /// Largest difference between a frozen gap and the gap of a fresh projection, over the
   /// active points of the linear variants, relative to their largest overclosure (0 when
@@ -114,6 +107,7 @@ class ContactSystem {
     const model::ContactPair* def = nullptr;
     model::ContactScheme scheme;
     model::SurfaceBehavior behavior;
+    PressureLaw law;            ///< the scheme's law for this behaviour
     ContactSurface slave, master;
     /// node-to-surface: the faces nodal areas come from (the slave faces, or for a node-based
     /// slave surface the exterior faces at its nodes) and, per node, (face, local node)
@@ -151,7 +145,6 @@ class ContactSystem {
   int n_active_ = 0;
   Real force_abs_sum_ = 0;
   Index force_components_ = 0;
-  Real stiffness_scale_ = 1;
 };
 
 }  // namespace kontakt::contact

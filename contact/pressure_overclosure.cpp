@@ -11,11 +11,10 @@ namespace {
 constexpr Real kExpCap = 23;
 }  // namespace
 
-PressureLaw make_pressure_law(const model::SurfaceBehavior& b, bool linear_variant,
-                              Real stiffness_scale) {
+PressureLaw make_pressure_law(const model::SurfaceBehavior& b, bool linear_variant) {
   using Law = model::SurfaceBehavior::Law;
   PressureLaw law;
-  law.stiffness = b.stiffness / stiffness_scale;
+  law.stiffness = b.stiffness;
   switch (b.law) {
     case Law::Linear:
       law.kind = linear_variant || b.tension_limit <= 0 ? PressureLaw::Kind::Linear

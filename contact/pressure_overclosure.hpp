@@ -34,9 +34,7 @@ struct PressureResponse {
 
 /// The law a pair uses: the linear variants of surface-to-surface contact take LINEAR as the
 /// truly linear law, node-to-surface and the nonlinear variants the quasi-bilinear one.
-/// `stiffness_scale` divides K (softened contact after divergence, ccx's kscale).
-PressureLaw make_pressure_law(const model::SurfaceBehavior& behavior, bool linear_variant,
-                              Real stiffness_scale = 1);
+PressureLaw make_pressure_law(const model::SurfaceBehavior& behavior, bool linear_variant);
 
 PressureResponse pressure_overclosure(const PressureLaw& law, Real d);
 

@@ -252,23 +252,15 @@ constexpr Real kDriftTolerance = 0.1;
 /// variants: the iteration cap is itf2f, the next increment is never shrunk for slow
 /// convergence (thesis 4.4.2) and grows after increments of up to I_G + 12 iterations.
 nonlinear::SolutionControls contact_controls(nonlinear::SolutionControls c,
-                                             contact::ContactRules rules,
+                                             nonlinear::ContactCriteria criteria,
                                              const model::ContactControls& cc) {
-  if (rules != contact::ContactRules::SurfaceToSurface) return c;
+  if (criteria != nonlinear::ContactCriteria::SurfaceToSurface) return c;
   c.max_iterations = cc.itf2f;
   c.slow_increment_iterations = std::numeric_limits<int>::max();
   c.fast_increment_iterations += 12;
   return c;
 }
 
-nonlinear::ContactCriteria criteria_of(contact::ContactRules rules) {
-  switch (rules) {
-    case contact::ContactRules::None: return nonlinear::ContactCriteria::None;
-    case contact::ContactRules::NodeToSurface: return nonlinear::ContactCriteria::NodeToSurface;
-    case contact::ContactRules::SurfaceToSurface: return nonlinear::ContactCriteria::SurfaceToSurface;
-  }
-  return nonlinear::ContactCriteria::None;
-}
 
 }  // namespace
 
@@ -301,7 +293,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   contact::ContactSystem contact(model);
   bool any_plastic = false;
   for (const auto& m : model.materials) any_plastic |= !m.plastic.empty();
-  const contact::ContactRules contact_rules = contact.rules();
+  const nonlinear::ContactCriteria contact_rules = contact.criteria();
   ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
   linsolve::SpdSolve spd(*solver);
@@ -347,10 +339,10 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     const nonlinear::SolutionControls controls = contact_controls(
         options.controls ? *options.controls : step.controls, contact_rules, step.contact_controls);
     nonlinear::Convergence convergence(controls, last_q_bar);
-    convergence.set_contact_criteria(criteria_of(contact_rules), step.contact_controls.delcon);
+    convergence.set_contact_criteria(contact_rules, step.contact_controls.delcon);
     nonlinear::IncrementControl increments(step_timing(step), controls);
     // Line search (ccx: face-to-face contact only, from iteration 2, with contact active).
-    const bool line_search = contact_rules == contact::ContactRules::SurfaceToSurface;
+    const bool line_search = contact_rules == nonlinear::ContactCriteria::SurfaceToSurface;
     VecX x = VecX::Zero(dofs.n_equations());
     for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];
 
@@ -434,7 +426,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                          .contact_elements = contact.empty() ? -1 : contact.n_active(),
                          .wall_time = wall()});
         if (verdict.kind == nonlinear::Verdict::Kind::Converged && !contact.empty() &&
-            contact_rules == contact::ContactRules::SurfaceToSurface) {
+            contact_rules == nonlinear::ContactCriteria::SurfaceToSurface) {
           // Beyond the thesis (section 7.1): frozen projections that no longer lie under their
           // points give wrong gaps; redo the increment smaller while the limits allow it.
           const Real drift = contact.frozen_drift(u_trial);

@@ -47,8 +47,6 @@ TEST(PressureOverclosure, LinearVariantIsTrulyLinear) {
   EXPECT_TRUE(is_active(law, 0, 0));
   EXPECT_DOUBLE_EQ(pressure_overclosure(law, 0).slope, 1e7);  // touching carries stiffness
   EXPECT_FALSE(is_active(law, -1e-12, 1.0));
-  // kscale softening divides K.
-  EXPECT_DOUBLE_EQ(make_pressure_law(linear(1e7, 3), true, 100).stiffness, 1e5);
 }
 
 TEST(PressureOverclosure, ExponentialTabularTied) {
