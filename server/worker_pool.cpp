@@ -167,6 +167,8 @@ void WorkerPool::run(const JobRecord& job) {
             ? "stopped at the wall-time limit of " + std::to_string(settings_.job_time_limit) + " s"
             : outcome.message;
     const std::vector<Artifact> artifacts = publish_results(work, results);
+    // The cancel handler raises the flag before it records `canceling`: the solver may win.
+    if (state.status == JobStatus::Canceled) store_.request_cancel(job.id);
     store_.finish_job(job.id, state.status, state.reason, message, summary, artifacts);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kontaktd: job %s: %s\n", job.id.c_str(), e.what());
