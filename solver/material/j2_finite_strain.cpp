@@ -88,7 +88,7 @@ J2FiniteResult j2_finite_strain(Real young, Real poisson, const HardeningTable& 
   J2FiniteResult out;
   out.state = committed;
   Real beta = 1.0;
-  Vec6 d_beta = Vec6::Zero();
+  Vec6 d_beta = Vec6::Zero(), d_beta_kirchhoff = Vec6::Zero();
   // Relative tolerance: a point returned onto the surface and re-evaluated with the same C
   // must stay elastic despite round-off, which the rebuilt elastic deviator (small against
   // mu) amplifies to about 1e-12.
@@ -97,13 +97,19 @@ J2FiniteResult j2_finite_strain(Real young, Real poisson, const HardeningTable& 
     const RadialReturn ret = solve_radial_return(table, alpha_n, q, G);
     const Real da = ret.delta_alpha;
     beta = 1.0 - 3.0 * G * da / q;
-    // Consistent linearisation of q, G, d_alpha and beta.
+    // Consistent linearisation of q, G, d_alpha and beta. q and G carry 1/J (the yield test
+    // is on the Cauchy deviator); without those dJ terms it is the linearisation with the
+    // yield stress J sigma_y held fixed, the Kirchhoff form of Simo's return.
     const Vec6 d_tr_b2 = strain_gradient((-2.0 / 3.0) * tr_b2 * Ci + 2.0 * j23 * j23 * (P * C * P));
     const Vec6 d_s_norm = (mu * mu * (d_tr_b2 - 6.0 * ie * d_ie)) / (2.0 * s_norm);
-    const Vec6 dq = q * (d_s_norm / s_norm - dJ / J);
-    const Vec6 dG = G * (d_ie / ie - dJ / J);
-    const Vec6 d_da = (dq - 3.0 * da * dG) / (3.0 * G + ret.slope);
-    d_beta = -3.0 * (da * dG + G * d_da) / q + (3.0 * G * da / (q * q)) * dq;
+    auto beta_gradient = [&](Real volume_terms) {
+      const Vec6 dq = q * (d_s_norm / s_norm - volume_terms * dJ / J);
+      const Vec6 dG = G * (d_ie / ie - volume_terms * dJ / J);
+      const Vec6 d_da = (dq - 3.0 * da * dG) / (3.0 * G + ret.slope);
+      return Vec6(-3.0 * (da * dG + G * d_da) / q + (3.0 * G * da / (q * q)) * dq);
+    };
+    d_beta = beta_gradient(1.0);
+    d_beta_kirchhoff = beta_gradient(0.0);
     const Mat3 P_new = beta * P + (1.0 - beta) * (ie / j23) * Ci;
     out.state.plastic_strain = voigt(0.5 * (Mat3::Identity() - P_new));
     out.state.equivalent_plastic_strain = alpha_n + da;
@@ -111,9 +117,10 @@ J2FiniteResult j2_finite_strain(Real young, Real poisson, const HardeningTable& 
     out.delta_alpha = da;
   }
   out.stress = pressure * Ci_v + beta * mu * dev_pull;
-  out.tangent = Ci_v * (bulk * J * dJ.transpose()) + pressure * d_Ci +
-                mu * dev_pull * d_beta.transpose() +
-                beta * mu * (P_v * d_j23.transpose() - Ci_v * d_ie.transpose() - ie * d_Ci);
+  const Mat6 at_fixed_beta = Ci_v * (bulk * J * dJ.transpose()) + pressure * d_Ci +
+                             beta * mu * (P_v * d_j23.transpose() - Ci_v * d_ie.transpose() - ie * d_Ci);
+  out.tangent = at_fixed_beta + mu * dev_pull * d_beta.transpose();
+  out.kirchhoff_tangent = at_fixed_beta + mu * dev_pull * d_beta_kirchhoff.transpose();
   // After the return tr(b_e) is still 3 I_e (s is deviatoric).
   out.energy_density = 0.5 * bulk * (0.5 * (J * J - 1.0) - std::log(J)) + 1.5 * mu * (ie - 1.0);
   return out;

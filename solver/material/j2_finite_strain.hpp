@@ -13,8 +13,13 @@
 //              K/2 ((J^2 - 1)/2 - ln J) + mu/2 (tr b_e - 3), and S = F^-1 tau F^-T.
 // Checked against ccx 2.20 on homogeneous single-element paths (uniaxial, shear, mixed,
 // reversed, several hardening segments): stresses and PEEQ agree to all printed digits.
-// The yield test on the Cauchy deviator makes the plastic tangent slightly unsymmetric
-// (of the order yield/K).
+// The yield test on the Cauchy deviator makes the exact plastic tangent unsymmetric: a
+// volume change moves the Kirchhoff deviator of a yielding point (coupling of the order of the
+// yield stress, large against the small plastic stiffness along the flow). ccx linearises the
+// return as if the yield stress J sigma_y were fixed, which drops that coupling; with that
+// tangent (kirchhoff_tangent, nearly symmetric) Kontakt's Newton iterates are ccx's to the
+// printed digits (beampiso), and they converge faster than with the symmetric part of the
+// exact one.
 //
 // Conventions: Voigt order xx, yy, zz, xy, xz, yz; stresses and the stored state with tensor
 // components; the tangent is dS/dE with E the Green-Lagrange strain in ENGINEERING shear
@@ -32,7 +37,9 @@ namespace kontakt::material {
 /// equivalent plastic strain. The virgin state is all zero in both models.
 struct J2FiniteResult {
   Vec6 stress = Vec6::Zero();   ///< second Piola-Kirchhoff S
-  Mat6 tangent = Mat6::Zero();  ///< consistent dS/dE (engineering shear), unsymmetric when plastic
+  Mat6 tangent = Mat6::Zero();  ///< exact dS/dE (engineering shear), unsymmetric when plastic
+  /// dS/dE with the yield stress J sigma_y held fixed (ccx's); = tangent where elastic.
+  Mat6 kirchhoff_tangent = Mat6::Zero();
   J2State state;                ///< trial state at the end of the increment
   Real energy_density = 0;      ///< stored elastic energy per reference volume
   bool yielded = false;

@@ -198,6 +198,32 @@ TEST(J2FiniteStrain, TangentMatchesFiniteDifferencesElasticUnloading) {
   EXPECT_LT(rel_err(r.tangent, fd_tangent(three_rows(), s, right_cauchy_green(back))), 1e-7);
 }
 
+TEST(J2FiniteStrain, KirchhoffTangentDropsOnlyTheVolumeCouplingOfTheYield) {
+  Mat3 F;
+  F << 1.08, 0.12, 0.0, -0.03, 0.97, 0.05, 0.02, 0.0, 0.99;
+  const Mat3 C = right_cauchy_green(F);
+  const J2FiniteResult r = j2_finite_strain(kE, kNu, three_rows(), J2State{}, C);
+  ASSERT_TRUE(r.yielded);
+  // The difference is rank one: the deviatoric stress (pulled back) times d(ln J).
+  const Real bulk = kE / (3 * (1 - 2 * kNu));
+  const Real J = std::sqrt(C.determinant());
+  const Mat3 Ci = C.inverse();
+  Vec6 Ci_v;
+  Ci_v << Ci(0, 0), Ci(1, 1), Ci(2, 2), Ci(0, 1), Ci(0, 2), Ci(1, 2);
+  const Vec6 dlnJ = Ci_v;  // d(ln J)/dE in engineering shear: C^-1 with tensor components
+  const Vec6 s_dev = r.stress - 0.5 * bulk * (J * J - 1) * Ci_v;
+  const Mat6 diff = r.tangent - r.kirchhoff_tangent;
+  const Real scale = diff.norm();
+  ASSERT_GT(scale, 1e-6 * r.tangent.norm());
+  const Real weight = (s_dev.transpose() * diff * dlnJ)(0, 0) / (s_dev.squaredNorm() * dlnJ.squaredNorm());
+  const Mat6 rank_one = weight * s_dev * dlnJ.transpose();
+  EXPECT_LT((diff - rank_one).norm(), 1e-8 * scale);
+  // Nearly symmetric, and equal to the exact tangent where the point stays elastic.
+  EXPECT_LT((r.kirchhoff_tangent - r.kirchhoff_tangent.transpose()).norm(), 1e-3 * r.kirchhoff_tangent.norm());
+  const J2FiniteResult e = j2_finite_strain(kE, kNu, HardeningTable{{{1e9, 0.0}}}, J2State{}, C);
+  EXPECT_EQ(e.tangent, e.kirchhoff_tangent);
+}
+
 TEST(J2FiniteStrain, RejectsAnInvertedDeformation) {
   Mat3 C = Mat3::Identity();
   C(2, 2) = -1;
