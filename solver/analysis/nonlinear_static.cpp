@@ -25,8 +25,10 @@
 #include "contact/contact_extrapolation.hpp"
 #include "contact/contact_system.hpp"
 #include "core/parallel.hpp"
+#include "element/element_state.hpp"
 #include "element/solid_plastic.hpp"
 #include "element/total_lagrangian.hpp"
+#include "element/total_lagrangian_plastic.hpp"
 #include "linsolve/spd_solve.hpp"
 #include "nonlinear/convergence.hpp"
 #include "nonlinear/increment_control.hpp"
@@ -37,7 +39,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-using PointStates = std::vector<std::vector<material::J2State>>;  ///< per element, per point
+using PointStates = std::vector<element::ElementState>;  ///< per element
 
 /// What an element reports at its points in the state last evaluated.
 struct ElementOutput {
@@ -58,22 +60,33 @@ material::HardeningTable hardening_of(const model::Model& model, const model::El
   return {element_material_def(model, el).plastic};
 }
 
-/// One element's tangent, internal force and point output: total Lagrangian under NLGEOM,
-/// J2 return mapping for plastic materials, linear elasticity otherwise.
+/// One element's tangent, internal force and point output: total Lagrangian under NLGEOM
+/// (finite-strain J2 for plastic materials), small-strain J2 return mapping for plastic
+/// materials, linear elasticity otherwise.
 void element_response(const model::Model& model, const model::Element& el, bool nlgeom,
-                      const VecX& u, const VecX& dT, const std::vector<material::J2State>& committed,
-                      MatX& K, VecX& f_int, ElementOutput& out,
-                      std::vector<material::J2State>& trial) {
+                      const VecX& u, const VecX& dT, const element::ElementState& committed,
+                      MatX& K, VecX& f_int, ElementOutput& out, element::ElementState& trial) {
   const MatX3 X = element_coords(model, el), ue = element_displacements(el, u);
   const VecX dTe = element_values(el, dT);
   const auto mat = element_material(model, el);
-  if (nlgeom) {
-    element::NlgeomResult r;
-    element::nlgeom_element(el.type, X, mat, ue, dTe, true, r);
+  const bool plastic = !element_material_def(model, el).plastic.empty();
+  if (nlgeom && plastic) {
+    element::NlgeomPlasticResult r;
+    element::nlgeom_plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed,
+                                    true, r);
     K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
+    trial = std::move(r.state);
+    out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density),
+           std::move(r.peeq)};
+  } else if (nlgeom) {
+    element::NlgeomResult r;
+    element::nlgeom_element(el.type, X, mat, ue, dTe, true, r, committed.modes);
+    K = std::move(r.tangent);
+    f_int = std::move(r.internal_force);
+    trial.modes = std::move(r.modes);
     out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density), VecX()};
-  } else if (!element_material_def(model, el).plastic.empty()) {
+  } else if (plastic) {
     element::PlasticResult r;
     element::plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed, true, r);
     K = std::move(r.tangent);
@@ -85,8 +98,13 @@ void element_response(const model::Model& model, const model::Element& el, bool 
     element::recover(el.type, X, mat, ue, dTe, r);
     element::linear_stiffness(el.type, X, mat, K);
     f_int = std::move(r.internal_force);
+    trial = committed;
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};
   }
+  // The nonlinear tangents are exact and, with a thermal strain (ccx's mechanical deformation
+  // gradient) or a yielding point (yield on the Cauchy stress), slightly unsymmetric; the
+  // Cholesky solver takes their symmetric part, which costs a little convergence rate there.
+  if (nlgeom || plastic) K = 0.5 * (K + K.transpose()).eval();
 }
 
 /// Contact's part of an evaluation: the system and how many times it was evaluated in the
@@ -178,25 +196,14 @@ output::Frame converged_frame(const model::Model& model, const VecX& u, const Ev
   return frame;
 }
 
-/// Refuses combinations this driver cannot represent, naming the step or material.
-void require_supported(const model::Model& model) {
-  bool any_plastic = false;
-  for (const auto& m : model.materials) any_plastic |= !m.plastic.empty();
-  if (!any_plastic) return;
-  for (const auto& step : model.steps)
-    if (step.nlgeom)
-      throw InputError(step.where, "*STEP",
-                       "NLGEOM together with *PLASTIC (finite-strain plasticity) is not "
-                       "supported yet");
-}
-
-/// Point states of every plastic element, all at the virgin state.
+/// Element states at the start: plastic points virgin, C3D8I mode amplitudes zero.
 PointStates initial_point_states(const model::Model& model) {
   PointStates states(model.mesh.elements.size());
   for (std::size_t e = 0; e < states.size(); ++e) {
     const auto& el = model.mesh.elements[e];
     if (!element_material_def(model, el).plastic.empty())
-      states[e].resize(element::traits(el.type).n_ip);
+      states[e].points.resize(element::traits(el.type).n_ip);
+    if (el.type == element::ElementType::C3D8I) states[e].modes = MatX3::Zero(3, 3);
   }
   return states;
 }
@@ -254,7 +261,6 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                           FrameSink& frames, EventSink& events) {
   if (model.steps.empty())
     throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
-  require_supported(model);
   PointStates committed = initial_point_states(model);
   const int threads = resolve_threads(options.threads);
   const auto t0 = Clock::now();

@@ -1,0 +1,45 @@
+#include "core/error.hpp"
+#include "element/quadrature.hpp"
+#include "element/solid_kernels.hpp"
+
+namespace kontakt::element {
+
+std::vector<KernelPoint> kernel_points(ElementType type, const MatX3& X, const VecX& dT) {
+  const auto rule = volume_rule(type);
+  KONTAKT_REQUIRE(dT.size() == 0 || dT.size() == X.rows(),
+                  "kernel_points: one temperature change per node is needed");
+  std::vector<KernelPoint> points(rule.size());
+  for (std::size_t k = 0; k < rule.size(); ++k) {
+    const PointGeometry g = rule_point_geometry(type, X, rule[k].xi);
+    points[k] = {g.dNdx, rule[k].weight * g.detJ, point_temperature(type, rule[k].xi, g.N, dT)};
+  }
+  return points;
+}
+
+void run_point_kernel(ElementType type, const MatX3& X, const LinearElastic& mat, const MatX3& u,
+                      const VecX& dT, const MatX3& modes_start, bool want_tangent,
+                      const PointKernel& kernel, VecX& f, MatX& K, MatX3& modes) {
+  KONTAKT_REQUIRE(u.rows() == X.rows(), "element kernel: wrong number of displacements");
+  const VecX temp = dT.size() == X.rows() ? dT : VecX();
+  if (type == ElementType::C3D8I) {
+    const auto points = incompatible_kernel_points(X, temp);
+    const Mat3 R = incompatible_frame_rotation(X, u);  // amplitudes are rows: a^T R^T = (R a)^T
+    const MatX3 start = modes_start.size() ? MatX3(modes_start * R.transpose()) : MatX3();
+    condense_incompatible_modes(
+        u, start,
+        [&](const MatX3& values, VecX& fa, MatX& Ka) { kernel(points, values, true, fa, Ka); },
+        want_tangent, f, K, modes);
+    modes = modes * R;
+    return;
+  }
+  modes.resize(0, 3);
+  kernel(kernel_points(type, X, temp), u, want_tangent, f, K);
+  if (type == ElementType::C3D8R) {
+    MatX Khg;
+    hourglass_stiffness(X, mat, Khg);
+    f += Khg * Eigen::Map<const VecX>(u.data(), u.size());
+    if (want_tangent) K += Khg;
+  }
+}
+
+}  // namespace kontakt::element
