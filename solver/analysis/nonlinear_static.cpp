@@ -277,7 +277,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   const contact::ContactRules contact_rules = contact.rules();
   ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
-  linsolve::SpdSolve spd(*solver);
+  linsolve::SpdSolve spd(*solver, /*allow_indefinite=*/true);  // tangents past limit points
 
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
