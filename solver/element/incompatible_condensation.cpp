@@ -23,7 +23,7 @@ Real max_abs(const VecX& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0; }
 
 }  // namespace
 
-void condense_incompatible_modes(const MatX3& u, const MatX3& start,
+void condense_incompatible_modes(const MatX3& u, const MatX3& start, Real size,
                                  const IncompatibleEvaluation& evaluate, bool want_tangent,
                                  VecX& f, MatX& K, MatX3& alpha) {
   KONTAKT_REQUIRE(u.rows() == 8, "C3D8I: needs 8 nodal displacements");
@@ -35,8 +35,11 @@ void condense_incompatible_modes(const MatX3& u, const MatX3& start,
   MatX K_all;
   evaluate(values, f_all, K_all);
   // Length against which a mode correction counts as round-off: the larger of the amplitudes
-  // and the spread of the nodal displacements (a translation deforms nothing).
+  // and the spread of the nodal displacements (a translation deforms nothing), and at least a
+  // strain of 1e-12 over the element: the stresses carry an absolute round-off of a few ulp
+  // of the moduli, which no correction removes when the element is (nearly) undeformed.
   const Real spread = (u.colwise().maxCoeff() - u.colwise().minCoeff()).maxCoeff();
+  const Real floor_length = 1e-2 * size;
   Eigen::PartialPivLU<MatX> lu;
   Real last_step = -1;  // size of the last correction applied, none yet
   for (int it = 0;; ++it) {
@@ -48,7 +51,8 @@ void condense_incompatible_modes(const MatX3& u, const MatX3& start,
     // the rest state), or the last correction was round-off against the element's deformation:
     // the mode forces then sit at their round-off floor, which cancellation in the stresses of
     // very small strains lifts above the first test.
-    const Real length = std::max(spread, values.bottomRows(3).cwiseAbs().maxCoeff());
+    const Real length =
+        std::max({spread, values.bottomRows(3).cwiseAbs().maxCoeff(), floor_length});
     if (max_abs(r) <= 1e-12 * max_abs(f_all.head(kNodal)) ||
         (last_step >= 0 && last_step <= 1e-10 * length))
       break;

@@ -58,19 +58,28 @@ struct KernelPoint {
 /// its modes).
 std::vector<KernelPoint> kernel_points(ElementType type, const MatX3& X, const VecX& dT);
 
+/// The modulus of C3D8R's hourglass stiffness as a kernel reports it, with its derivative
+/// with respect to the value rows (3n; empty: constant, or not needed by the tangent asked).
+struct HourglassModulus {
+  Real value = 0;
+  VecX gradient;
+};
+
 /// A nonlinear kernel over prepared points: forces f (3 x value rows) and, when asked, the
-/// tangent K of the value rows `values`; anything else it reports it records itself.
-using PointKernel = std::function<void(const std::vector<KernelPoint>& points,
-                                       const MatX3& values, bool want_tangent, VecX& f, MatX& K)>;
+/// tangent K of the value rows `values`; where `hourglass` is given (C3D8R) also the modulus
+/// of the hourglass stiffness. Anything else it reports it records itself.
+using PointKernel =
+    std::function<void(const std::vector<KernelPoint>& points, const MatX3& values,
+                       bool want_tangent, VecX& f, MatX& K, HourglassModulus* hourglass)>;
 
 /// Runs `kernel` on an element of `type` at nodal displacements u (kernel_points.cpp): C3D8I
 /// through the condensation of its incompatible modes (local solve from `modes_start`, 3 x 3
 /// or empty for zero; the amplitudes reached go to `modes`; both in the element's frame,
-/// incompatible_frame_rotation), C3D8R with its elastic hourglass
-/// stiffness (reference configuration) added, all others directly (`modes` left empty).
-void run_point_kernel(ElementType type, const MatX3& X, const LinearElastic& mat, const MatX3& u,
-                      const VecX& dT, const MatX3& modes_start, bool want_tangent,
-                      const PointKernel& kernel, VecX& f, MatX& K, MatX3& modes);
+/// incompatible_frame_rotation), C3D8R with its hourglass stiffness (reference
+/// configuration, modulus from the kernel) added, all others directly (`modes` left empty).
+void run_point_kernel(ElementType type, const MatX3& X, const MatX3& u, const VecX& dT,
+                      const MatX3& modes_start, bool want_tangent, const PointKernel& kernel,
+                      VecX& f, MatX& K, MatX3& modes);
 
 // --- Total Lagrangian building blocks (total_lagrangian_terms.cpp) ------------------------------
 
@@ -144,12 +153,13 @@ using IncompatibleEvaluation = std::function<void(const MatX3& values, VecX& f, 
 
 /// Static condensation of the incompatible modes of a nonlinear C3D8I: solves the modes'
 /// equilibrium f_alpha(u, alpha) = 0 by Newton's method with backtracking, starting from the
-/// amplitudes `start` (3 x 3; empty: zero), then returns the nodal forces (24), the condensed
+/// amplitudes `start` (3 x 3; empty: zero; `size` the element's extent, the scale of what counts
+/// as round-off), then returns the nodal forces (24), the condensed
 /// tangent K_uu - K_ua K_aa^-1 K_au (24 x 24) and the amplitudes reached (incompatible_
 /// condensation.cpp). The last call of `evaluate` is at the returned amplitudes, so whatever
 /// it records (stresses, point states) belongs to them; f, K and alpha are written only after
 /// the last call. SolverError when the local iteration fails.
-void condense_incompatible_modes(const MatX3& u, const MatX3& start,
+void condense_incompatible_modes(const MatX3& u, const MatX3& start, Real size,
                                  const IncompatibleEvaluation& evaluate, bool want_tangent,
                                  VecX& f, MatX& K, MatX3& alpha);
 
@@ -158,7 +168,9 @@ void condense_incompatible_modes(const MatX3& u, const MatX3& start,
 /// Flanagan-Belytschko mean gradients b = (1/V) integral dN/dx dV (8 x 3) and the volume V.
 void mean_gradients(const MatX3& X, ShapeGrad& b, Real& volume);
 
-/// Hourglass stiffness (24 x 24) to be added to the one-point stiffness.
-void hourglass_stiffness(const MatX3& X, const LinearElastic& mat, MatX& Khg);
+/// Hourglass stiffness (24 x 24) to be added to the one-point stiffness, for a material of
+/// modulus `modulus`: Young's modulus for linear elasticity; ccx takes the current xx entry of
+/// the material tangent, C_1111, for other materials (measured on *PLASTIC materials).
+void hourglass_stiffness(const MatX3& X, Real modulus, MatX& Khg);
 
 }  // namespace kontakt::element

@@ -9,7 +9,8 @@ void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
                      const material::HardeningTable& hardening, const MatX3& u, const VecX& dT,
                      const ElementState& committed, bool want_tangent, PlasticResult& out) {
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
-                    VecX& f, MatX& K) {
+                    VecX& f, MatX& K, HourglassModulus* hourglass) {
+    if (hourglass) hourglass->value = mat.young;  // small strain: the linear element's
     const int n = static_cast<int>(values.rows());
     const Index nip = static_cast<Index>(points.size());
     KONTAKT_REQUIRE(static_cast<Index>(committed.points.size()) == nip,
@@ -42,7 +43,7 @@ void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
       out.state.points[k] = r.state;
     }
   };
-  run_point_kernel(type, X, mat, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
+  run_point_kernel(type, X, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
                    out.tangent, out.state.modes);
 }
 

@@ -9,7 +9,8 @@ void nlgeom_element(ElementType type, const MatX3& X, const LinearElastic& mat, 
                     const MatX3& modes_start) {
   const Mat6 D = elasticity_matrix(mat);
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
-                    VecX& f, MatX& K) {
+                    VecX& f, MatX& K, HourglassModulus* hourglass) {
+    if (hourglass) hourglass->value = mat.young;
     out.energy_density.resize(static_cast<Index>(points.size()));
     auto svk = [&](Index k, const Mat3&, const Mat3& Fm) {
       Vec6 e = voigt_from_tensor(0.5 * (Fm.transpose() * Fm - Mat3::Identity()));
@@ -21,7 +22,7 @@ void nlgeom_element(ElementType type, const MatX3& X, const LinearElastic& mat, 
     integrate_total_lagrangian(points, values, mat.expansion, tangent, svk, f, K, out.cauchy,
                                out.green_lagrange);
   };
-  run_point_kernel(type, X, mat, u, dT, modes_start, want_tangent, kernel, out.internal_force,
+  run_point_kernel(type, X, u, dT, modes_start, want_tangent, kernel, out.internal_force,
                    out.tangent, out.modes);
 }
 

@@ -34,7 +34,8 @@ struct NlgeomPlasticResult {
 
 /// One element at nodal displacements u (n x 3) from the committed state (n_ip point states;
 /// C3D8I: the mode amplitudes its local solve starts from, empty for zero). C3D8R adds its
-/// elastic hourglass stiffness (reference configuration, as under SVK); C3D8I condenses its
+/// hourglass stiffness (reference configuration, as under SVK) with ccx's modulus for this
+/// material, the current C_1111 of the point's tangent; C3D8I condenses its
 /// incompatible modes by a local Newton iteration (with the chosen tangent too). SolverError for
 /// an inverted element or a failed local iteration.
 void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,

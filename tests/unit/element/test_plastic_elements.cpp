@@ -7,7 +7,9 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "element/solid_kernels.hpp"
 #include "element/solid_plastic.hpp"
+#include "element/total_lagrangian.hpp"
 #include "element/total_lagrangian_plastic.hpp"
 #include "element_test_util.hpp"
 
@@ -73,9 +75,18 @@ TEST_P(PlasticElements, ElasticLimitIsTheLinearStiffness) {
   const States s = virgin(type());
   MatX K;
   linear_stiffness(type(), x, kMat, K);
+  MatX K_nlgeom = K;
+  if (type() == ElementType::C3D8R) {
+    // ccx scales a *PLASTIC material's hourglass stiffness with C_1111 (lambda + 2 mu at
+    // rest), a linear elastic one's with E.
+    const Real nu = kMat.poisson, c1111 = kMat.young * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    MatX unit;
+    hourglass_stiffness(x, 1.0, unit);
+    K_nlgeom += (c1111 - kMat.young) * unit;
+  }
   const MatX3 tiny = displacement(1e-6);  // far below yield
   const NlgeomPlasticResult r = nlgeom(type(), x, tiny, s);
-  EXPECT_LT((r.tangent - K).norm(), 1e-5 * K.norm());
+  EXPECT_LT((r.tangent - K_nlgeom).norm(), 1e-5 * K.norm());
   EXPECT_EQ(r.peeq.maxCoeff(), 0.0);
   const PlasticResult q = small(type(), x, tiny, s);
   EXPECT_LT((q.tangent - K).norm(), 1e-10 * K.norm());
@@ -161,6 +172,38 @@ TEST_P(PlasticElements, SmallStrainTangentIsExactInPlasticLoadingAndUnloading) {
 
 INSTANTIATE_TEST_SUITE_P(AllTypes, PlasticElements, ::testing::ValuesIn(test::kAllTypes),
                          [](const auto& info) { return std::string(traits(info.param).name); });
+
+TEST(HourglassControlNonlinear, PlasticMaterialScalesWithItsTangentAsCcx) {
+  // A unit-cube C3D8R in a pure hourglass mode u_x = a xi eta (all nodes prescribed), measured
+  // with ccx 2.20 (E = 210000, nu = 0.3, a = 1e-4, NLGEOM): reaction 0.126 per node for
+  // *ELASTIC, 0.1696154 with *PLASTIC (lambda + 2 mu in place of E), 0.1622 after a 1 %
+  // stretch along x and 0.1007 once that stretch yields (yield 250), in the one increment.
+  const MatX3 X = test::reference_coordinates(Topology::Hex8) * 0.5 + MatX3::Constant(8, 3, 0.5);
+  auto reaction = [&](bool plastic, Real stretch, Real yield, Real a) {
+    MatX3 u = MatX3::Zero(8, 3);
+    for (Index n = 0; n < 8; ++n) {
+      const Vec3 xi = reference_node(Topology::Hex8, static_cast<int>(n));
+      u(n, 0) = a * xi(0) * xi(1) + stretch * X(n, 0);
+    }
+    const LinearElastic mat{210000.0, 0.3, 0.0};
+    if (!plastic) {
+      NlgeomResult r;
+      nlgeom_element(ElementType::C3D8R, X, mat, u, VecX(), false, r);
+      return r.internal_force[0];
+    }
+    NlgeomPlasticResult r;
+    nlgeom_plastic_element(ElementType::C3D8R, X, mat, HardeningTable{{{yield, 0.0}}}, u, VecX(),
+                           {std::vector<J2State>(1), MatX3()}, false, r);
+    return r.internal_force[0];
+  };
+  auto hourglass_part = [&](bool plastic, Real stretch, Real yield) {
+    return reaction(plastic, stretch, yield, 1e-4) - reaction(plastic, stretch, yield, 0.0);
+  };
+  EXPECT_NEAR(hourglass_part(false, 0.0, 0), 0.126, 5e-7);
+  EXPECT_NEAR(hourglass_part(true, 0.0, 1e6), 0.1696154, 5e-7);
+  EXPECT_NEAR(hourglass_part(true, 0.01, 1e6), 0.1622, 5e-4);
+  EXPECT_NEAR(hourglass_part(true, 0.01, 250), 0.1007, 5e-4);
+}
 
 TEST(IncompatibleModesNonlinear, CondensedModesCarryNoForce) {
   // The forces of the condensed element are those of the 33-dof element at the modes'
