@@ -32,6 +32,7 @@
 #include "linsolve/spd_solve.hpp"
 #include "nonlinear/convergence.hpp"
 #include "nonlinear/increment_control.hpp"
+#include "nonlinear/static_predictor.hpp"
 
 namespace kontakt::analysis {
 
@@ -324,6 +325,8 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     const bool line_search = contact_rules == contact::ContactRules::SurfaceToSurface;
     VecX x = VecX::Zero(dofs.n_equations());
     for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];
+    nonlinear::StaticPredictor predictor;
+    predictor.begin_step();
 
     while (!increments.finished()) {
       const Real t = increments.step_time() + increments.increment();
@@ -332,17 +335,20 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                                        u_step_start, u_step_start);
 
       const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
-      // Iteration 1 starts from the converged state and moves the prescribed dofs to their new
-      // values through the linearised system; later iterations correct the free dofs only.
+      // Iteration 1 starts from the static predictor's extrapolation of the converged state
+      // (the converged state itself in an increment that starts a step) and moves the
+      // prescribed dofs to their new values through the linearised system; later iterations
+      // correct the free dofs only.
       const Real t_old = increments.step_time();
-      const VecX g_old = prescribed_values(model, step, dofs, t_old, total_time_start + t_old,
-                                           t_old / period, u_step_start, u_step_start);
-      VecX x_trial = x;
+      const VecX u_start = predictor.start(u, increments.increment());
+      VecX x_trial(dofs.n_equations()), g_old(dofs.n_prescribed());
+      for (int eq = 0; eq < dofs.n_equations(); ++eq) x_trial[eq] = u_start[dofs.equation_dof(eq)];
+      for (int k = 0; k < dofs.n_prescribed(); ++k) g_old[k] = u_start[dofs.prescribed_dof(k)];
       VecX u_trial = dofs.expand(x_trial, g_old);
       const VecX no_step = VecX::Zero(dofs.n_prescribed());
       ContactEvaluation contact_eval{contact.empty() ? nullptr : &contact, 0};
       if (!contact.empty()) {
-        contact.begin_increment(u_trial,
+        contact.begin_increment(u,  // pairings at the converged state, not the prediction
                                 {.step = step_no, .increment = increments.increment_number(),
                                  .fraction_start = t_old / period, .fraction_end = ramp},
                                 threads);
@@ -421,6 +427,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         }
         if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
           convergence.commit_increment();
+          predictor.converged(u, u_trial, increments.increment());
           x = x_trial;
           u = u_trial;
           const int increment_no = increments.increment_number();

@@ -64,7 +64,9 @@ X1, 1, 1, 0.5
     EXPECT_NEAR(f.E(k, 0), E11, 1e-9);
     EXPECT_NEAR(f.E(k, 1), E22, 1e-9);
   }
-  EXPECT_NEAR(f.U(6, 1), lateral - 1, 1e-9);  // node 7 contracts laterally
+  // node 7 contracts laterally; ccx's "linear" rule (r <= 1e-8 q~) may end the iteration
+  // before the tight correction tolerance does, which leaves ~1e-9 here
+  EXPECT_NEAR(f.U(6, 1), lateral - 1, 1e-8);
   // The reactions on x = 0 carry the first Piola-Kirchhoff force F11 * S11 * A0.
   Real reaction = 0;
   for (int n : {0, 3, 4, 7}) reaction += f.RF(n, 0);
