@@ -42,13 +42,21 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElasti
     out.peeq.resize(nip);
     out.energy_density.resize(nip);
     out.state.points.resize(nip);
+    out.state.work.resize(nip);
     Mat3 Fm_first;  // the mechanical deformation gradient of the first point
     auto j2 = [&](Index k, const Mat3&, const Mat3& Fm) {
       const material::J2FiniteResult r = material::j2_finite_strain(
           mat.young, mat.poisson, hardening, committed.points[k], Fm.transpose() * Fm);
       out.peeq(k) = r.state.equivalent_plastic_strain;
-      out.energy_density(k) = r.energy_density;
       out.state.points[k] = r.state;
+      const PointWork before = committed.work.empty() ? PointWork{} : committed.work[k];
+      PointWork& after = out.state.work[k];
+      after.stress = r.stress;
+      after.strain = voigt_from_tensor(0.5 * (Fm.transpose() * Fm - Mat3::Identity()));
+      const Vec6 sum = before.stress + after.stress, dE = after.strain - before.strain;
+      after.density = before.density + 0.5 * (sum.head<3>().dot(dE.head<3>()) +
+                                              2 * sum.tail<3>().dot(dE.tail<3>()));
+      out.energy_density(k) = after.density;
       if (k == 0) {
         Fm_first = Fm;
         if (hourglass) hourglass->value = r.kirchhoff_tangent(0, 0);

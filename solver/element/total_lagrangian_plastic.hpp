@@ -28,7 +28,7 @@ struct NlgeomPlasticResult {
   MatX6 cauchy;          ///< n_ip x 6
   MatX6 green_lagrange;  ///< n_ip x 6 total Green-Lagrange strain, tensor shear components
   VecX peeq;             ///< n_ip equivalent plastic strain
-  VecX energy_density;   ///< n_ip stored elastic energy per reference volume
+  VecX energy_density;   ///< n_ip ccx's ENER: the work S : dE summed over the increments
   ElementState state;    ///< trial state: point states, C3D8I's mode amplitudes
 };
 

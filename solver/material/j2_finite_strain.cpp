@@ -3,7 +3,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "core/error.hpp"
 
@@ -46,18 +45,11 @@ Mat6 inverse_derivative(const Mat3& Ci) {
   return m;
 }
 
-void check_elastic(Real young, Real poisson) {
-  if (!(young > 0.0) || !std::isfinite(young))
-    throw std::invalid_argument("J2 plasticity: Young's modulus must be positive and finite");
-  if (!(poisson > -1.0 && poisson < 0.5))
-    throw std::invalid_argument("J2 plasticity: Poisson's ratio must lie in (-1, 0.5)");
-}
-
 }  // namespace
 
 J2FiniteResult j2_finite_strain(Real young, Real poisson, const HardeningTable& table,
                                 const J2State& committed, const Mat3& C) {
-  check_elastic(young, poisson);
+  check_elastic_constants(young, poisson);
   table.validate();
   const Real mu = young / (2.0 * (1.0 + poisson));
   const Real bulk = young / (3.0 * (1.0 - 2.0 * poisson));
@@ -121,8 +113,6 @@ J2FiniteResult j2_finite_strain(Real young, Real poisson, const HardeningTable& 
                              beta * mu * (P_v * d_j23.transpose() - Ci_v * d_ie.transpose() - ie * d_Ci);
   out.tangent = at_fixed_beta + mu * dev_pull * d_beta.transpose();
   out.kirchhoff_tangent = at_fixed_beta + mu * dev_pull * d_beta_kirchhoff.transpose();
-  // After the return tr(b_e) is still 3 I_e (s is deviatoric).
-  out.energy_density = 0.5 * bulk * (0.5 * (J * J - 1.0) - std::log(J)) + 1.5 * mu * (ie - 1.0);
   return out;
 }
 

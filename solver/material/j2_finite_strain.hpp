@@ -41,7 +41,6 @@ struct J2FiniteResult {
   /// dS/dE with the yield stress J sigma_y held fixed (ccx's); = tangent where elastic.
   Mat6 kirchhoff_tangent = Mat6::Zero();
   J2State state;                ///< trial state at the end of the increment
-  Real energy_density = 0;      ///< stored elastic energy per reference volume
   bool yielded = false;
   Real delta_alpha = 0;
 };

@@ -25,17 +25,17 @@ Real tensor_norm(const Vec6& t) {
   return std::sqrt(t.head<3>().squaredNorm() + 2.0 * t.tail<3>().squaredNorm());
 }
 
-void check_elastic(Real young, Real poisson) {
+}  // namespace
+
+void check_elastic_constants(Real young, Real poisson) {
   if (!(young > 0.0) || !std::isfinite(young))
     throw std::invalid_argument("J2 plasticity: Young's modulus must be positive and finite");
   if (!(poisson > -1.0 && poisson < 0.5))
     throw std::invalid_argument("J2 plasticity: Poisson's ratio must lie in (-1, 0.5)");
 }
 
-}  // namespace
-
 Mat6 isotropic_elastic_stiffness(Real young, Real poisson) {
-  check_elastic(young, poisson);
+  check_elastic_constants(young, poisson);
   const Real mu = young / (2.0 * (1.0 + poisson));
   const Real lambda = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
   Mat6 c = Mat6::Zero();
@@ -49,7 +49,7 @@ Real von_mises(const Vec6& stress) { return std::sqrt(1.5) * tensor_norm(deviato
 
 J2Result j2_return_map(Real young, Real poisson, const HardeningTable& table,
                        const J2State& committed, const Vec6& strain, Real thermal_strain) {
-  check_elastic(young, poisson);
+  check_elastic_constants(young, poisson);
   table.validate();
   const Real mu = young / (2.0 * (1.0 + poisson));
   const Real bulk = young / (3.0 * (1.0 - 2.0 * poisson));

@@ -29,6 +29,9 @@ struct J2Result {
   Real delta_alpha = 0;         ///< increment of equivalent plastic strain
 };
 
+/// Throws std::invalid_argument unless 0 < E < inf and -1 < nu < 0.5.
+void check_elastic_constants(Real young, Real poisson);
+
 /// Isotropic linear-elastic stiffness (engineering shear strain -> stress).
 Mat6 isotropic_elastic_stiffness(Real young, Real poisson);
 

@@ -41,7 +41,9 @@ class PlasticElements : public ::testing::TestWithParam<ElementType> {
 
 /// The virgin state of an element of `type`.
 States virgin(ElementType type) {
-  return {std::vector<J2State>(static_cast<std::size_t>(traits(type).n_ip)), MatX3()};
+  States s;
+  s.points.resize(static_cast<std::size_t>(traits(type).n_ip));
+  return s;
 }
 
 /// Forces, tangent and states of the NLGEOM kernel.
@@ -193,7 +195,7 @@ TEST(HourglassControlNonlinear, PlasticMaterialScalesWithItsTangentAsCcx) {
     }
     NlgeomPlasticResult r;
     nlgeom_plastic_element(ElementType::C3D8R, X, mat, HardeningTable{{{yield, 0.0}}}, u, VecX(),
-                           {std::vector<J2State>(1), MatX3()}, false, r);
+                           virgin(ElementType::C3D8R), false, r);
     return r.internal_force[0];
   };
   auto hourglass_part = [&](bool plastic, Real stretch, Real yield) {

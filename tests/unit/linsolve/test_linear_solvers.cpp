@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <memory>
 
 #include "linsolve/linear_solver.hpp"
 #include "linsolve/blas_threads.hpp"
@@ -27,6 +28,13 @@ assembly::SparsePattern dense_pattern(const MatX& A, bool upper, std::vector<Rea
     p.col_start.push_back(static_cast<Index>(p.row_index.size()));
   }
   return p;
+}
+
+/// CHOLMOD, analysed for a pattern.
+std::unique_ptr<linsolve::LinearSolver> cholmod_for(const assembly::SparsePattern& p) {
+  auto solver = linsolve::make_cholmod_solver();
+  solver->analyze(p);
+  return solver;
 }
 
 MatX spd_matrix(int n) {
@@ -146,8 +154,7 @@ TEST(SpdSolve, IndefiniteSystemIsSolvedByLuOnlyWhenAllowed) {
   const VecX b = VecX::Random(n);
   std::vector<Real> values;
   const auto p = dense_pattern(A, true, values);
-  auto cholmod = linsolve::make_cholmod_solver();
-  cholmod->analyze(p);
+  const auto cholmod = cholmod_for(p);
   linsolve::SpdSolveReport refused;
   linsolve::SpdSolve strict(*cholmod);
   EXPECT_THROW(strict.factorise(p, values, refused), linsolve::SingularMatrix);
@@ -177,8 +184,7 @@ TEST(SpdSolve, IllConditionedRegularSystemPassesOnItsBackwardError) {
   const MatX As = 0.5 * (A + A.transpose());
   std::vector<Real> values;
   const auto p = dense_pattern(As, true, values);
-  auto cholmod = linsolve::make_cholmod_solver();
-  cholmod->analyze(p);
+  const auto cholmod = cholmod_for(p);
   linsolve::SpdSolve spd(*cholmod);
   linsolve::SpdSolveReport report;
   spd.factorise(p, values, report);
