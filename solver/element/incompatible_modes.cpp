@@ -30,11 +30,13 @@ CentroidFrame centroid_frame(const MatX3& X) {
   return {g0.J.inverse().transpose(), g0.detJ};
 }
 
-// Physical gradients of the three modes at natural point xi (3 x 3, one row per mode).
+// Physical gradients of the three modes at natural point xi (3 x 3, one row per mode): the
+// natural gradients mapped with the centroid Jacobian as shape-function gradients are,
+// dphi J0^-T (point_geometry), scaled by det(J0)/det(J).
 ShapeGrad mode_gradients(const CentroidFrame& c, const Vec3& xi, Real detJ) {
   ShapeGrad dphi = ShapeGrad::Zero(3, 3);
   for (int m = 0; m < 3; ++m) dphi(m, m) = -2 * xi(m);
-  return (c.det / detJ) * (dphi * c.inv_jt.transpose());
+  return (c.det / detJ) * (dphi * c.inv_jt);
 }
 
 // Strain matrix of the incompatible modes at natural point xi.
