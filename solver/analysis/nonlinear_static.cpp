@@ -102,9 +102,9 @@ void element_response(const model::Model& model, const model::Element& el, bool 
     trial = committed;
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};
   }
-  // The nonlinear tangents are exact and, with a thermal strain (ccx's mechanical deformation
-  // gradient) or a yielding point (yield on the Cauchy stress), slightly unsymmetric; the
-  // Cholesky solver takes their symmetric part, which costs a little convergence rate there.
+  // The nonlinear tangents are unsymmetric by O(alpha dT) with a thermal strain (ccx's
+  // mechanical deformation gradient) and very slightly where points yield; the Cholesky
+  // solver takes their symmetric part, which costs a little convergence rate there.
   if (nlgeom || plastic) K = 0.5 * (K + K.transpose()).eval();
 }
 
@@ -325,8 +325,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     const bool line_search = contact_rules == contact::ContactRules::SurfaceToSurface;
     VecX x = VecX::Zero(dofs.n_equations());
     for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];
-    nonlinear::StaticPredictor predictor;
-    predictor.begin_step();
+    nonlinear::StaticPredictor predictor;  // one per step: a step starts from its converged state
 
     while (!increments.finished()) {
       const Real t = increments.step_time() + increments.increment();

@@ -9,11 +9,10 @@
 
 namespace kontakt::nonlinear {
 
+/// One per step: until an increment of the step has converged there is nothing to
+/// extrapolate, and the first increment starts from the converged state.
 class StaticPredictor {
  public:
-  /// A new step: no velocity yet (the first increment starts from the converged state).
-  void begin_step() { velocity_.resize(0); }
-
   /// The increment from u_start to u_end of size dt converged.
   void converged(const VecX& u_start, const VecX& u_end, Real dt) {
     velocity_ = (u_end - u_start) / dt;

@@ -1,5 +1,5 @@
-// ccx's static predictor: nothing to extrapolate at a step's start, then the last converged
-// increment's velocity.
+// ccx's static predictor: nothing to extrapolate before an increment of the step converged,
+// then the last converged increment's velocity.
 #include "nonlinear/static_predictor.hpp"
 
 #include <gtest/gtest.h>
@@ -9,7 +9,6 @@ namespace {
 
 TEST(StaticPredictor, ExtrapolatesTheLastConvergedIncrementWithinAStep) {
   StaticPredictor p;
-  p.begin_step();
   VecX u(2), v(2);
   u << 1.0, -2.0;
   EXPECT_EQ(p.start(u, 0.5), u);  // first increment of the step: the converged state
@@ -18,8 +17,8 @@ TEST(StaticPredictor, ExtrapolatesTheLastConvergedIncrementWithinAStep) {
   VecX expected(2);
   expected << 1.5 + 0.1 * 2.0, -1.0 + 0.1 * 4.0;
   EXPECT_LT((p.start(v, 0.1) - expected).norm(), 1e-15);
-  p.begin_step();                  // a new step has its own loading: start afresh
-  EXPECT_EQ(p.start(v, 0.1), v);
+  p.converged(v, v, 0.1);          // an increment that did not move: nothing to extrapolate
+  EXPECT_EQ(p.start(v, 0.3), v);
 }
 
 }  // namespace
