@@ -25,11 +25,14 @@
 #include "contact/contact_extrapolation.hpp"
 #include "contact/contact_system.hpp"
 #include "core/parallel.hpp"
+#include "element/element_state.hpp"
 #include "element/solid_plastic.hpp"
 #include "element/total_lagrangian.hpp"
+#include "element/total_lagrangian_plastic.hpp"
 #include "linsolve/spd_solve.hpp"
 #include "nonlinear/convergence.hpp"
 #include "nonlinear/increment_control.hpp"
+#include "nonlinear/static_predictor.hpp"
 
 namespace kontakt::analysis {
 
@@ -37,7 +40,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-using PointStates = std::vector<std::vector<material::J2State>>;  ///< per element, per point
+using PointStates = std::vector<element::ElementState>;  ///< per element
 
 /// What an element reports at its points in the state last evaluated.
 struct ElementOutput {
@@ -58,23 +61,33 @@ material::HardeningTable hardening_of(const model::Model& model, const model::El
   return {element_material_def(model, el).plastic};
 }
 
-/// One element's tangent, internal force and point output: total Lagrangian under NLGEOM,
-/// J2 return mapping for plastic materials, linear elasticity otherwise (whose constant
-/// stiffness is skipped when `K` is null).
+/// One element's tangent, internal force and point output: total Lagrangian under NLGEOM
+/// (finite-strain J2 for plastic materials), small-strain J2 return mapping for plastic
+/// materials, linear elasticity otherwise (whose constant stiffness is skipped when `K` is null).
 void element_response(const model::Model& model, const model::Element& el, bool nlgeom,
-                      const VecX& u, const VecX& dT, const std::vector<material::J2State>& committed,
-                      MatX* K, VecX& f_int, ElementOutput& out,
-                      std::vector<material::J2State>& trial) {
+                      const VecX& u, const VecX& dT, const element::ElementState& committed,
+                      MatX* K, VecX& f_int, ElementOutput& out, element::ElementState& trial) {
   const MatX3 X = element_coords(model, el), ue = element_displacements(el, u);
   const VecX dTe = element_values(el, dT);
   const auto mat = element_material(model, el);
-  if (nlgeom) {
-    element::NlgeomResult r;
-    element::nlgeom_element(el.type, X, mat, ue, dTe, true, r);
+  const bool plastic = !element_material_def(model, el).plastic.empty();
+  if (nlgeom && plastic) {
+    element::NlgeomPlasticResult r;
+    element::nlgeom_plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed,
+                                    true, r);
     *K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
+    trial = std::move(r.state);
+    out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density),
+           std::move(r.peeq)};
+  } else if (nlgeom) {
+    element::NlgeomResult r;
+    element::nlgeom_element(el.type, X, mat, ue, dTe, true, r, committed.modes);
+    *K = std::move(r.tangent);
+    f_int = std::move(r.internal_force);
+    trial.modes = std::move(r.modes);
     out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density), VecX()};
-  } else if (!element_material_def(model, el).plastic.empty()) {
+  } else if (plastic) {
     element::PlasticResult r;
     element::plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed, true, r);
     *K = std::move(r.tangent);
@@ -86,8 +99,13 @@ void element_response(const model::Model& model, const model::Element& el, bool 
     element::recover(el.type, X, mat, ue, dTe, r);
     if (K) element::linear_stiffness(el.type, X, mat, *K);
     f_int = std::move(r.internal_force);
+    trial = committed;
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};
   }
+  // The nonlinear tangents are unsymmetric by O(alpha dT) with a thermal strain (ccx's
+  // mechanical deformation gradient) and very slightly where points yield; the Cholesky
+  // solver takes their symmetric part, which costs a little convergence rate there.
+  if (nlgeom || plastic) *K = 0.5 * (*K + K->transpose()).eval();
 }
 
 /// Contact's part of an evaluation: the system and how many times it was evaluated in the
@@ -209,25 +227,14 @@ output::Frame converged_frame(const model::Model& model, const VecX& u, const Ev
   return frame;
 }
 
-/// Refuses combinations this driver cannot represent, naming the step or material.
-void require_supported(const model::Model& model) {
-  bool any_plastic = false;
-  for (const auto& m : model.materials) any_plastic |= !m.plastic.empty();
-  if (!any_plastic) return;
-  for (const auto& step : model.steps)
-    if (step.nlgeom)
-      throw InputError(step.where, "*STEP",
-                       "NLGEOM together with *PLASTIC (finite-strain plasticity) is not "
-                       "supported yet");
-}
-
-/// Point states of every plastic element, all at the virgin state.
+/// Element states at the start: plastic points virgin, C3D8I mode amplitudes zero.
 PointStates initial_point_states(const model::Model& model) {
   PointStates states(model.mesh.elements.size());
   for (std::size_t e = 0; e < states.size(); ++e) {
     const auto& el = model.mesh.elements[e];
     if (!element_material_def(model, el).plastic.empty())
-      states[e].resize(element::traits(el.type).n_ip);
+      states[e].points.resize(element::traits(el.type).n_ip);
+    if (el.type == element::ElementType::C3D8I) states[e].modes = MatX3::Zero(3, 3);
   }
   return states;
 }
@@ -277,7 +284,6 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                           FrameSink& frames, EventSink& events) {
   if (model.steps.empty())
     throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
-  require_supported(model);
   PointStates committed = initial_point_states(model);
   const int threads = resolve_threads(options.threads);
   const auto t0 = Clock::now();
@@ -296,7 +302,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
   const nonlinear::ContactCriteria contact_rules = contact.criteria();
   ConstraintLayout layout;
   auto solver = linsolve::make_cholmod_solver();
-  linsolve::SpdSolve spd(*solver);
+  linsolve::SpdSolve spd(*solver, /*allow_indefinite=*/true);  // tangents past limit points
 
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
@@ -345,6 +351,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
     const bool line_search = contact_rules == nonlinear::ContactCriteria::SurfaceToSurface;
     VecX x = VecX::Zero(dofs.n_equations());
     for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];
+    nonlinear::StaticPredictor predictor;  // one per step: a step starts from its converged state
 
     while (!increments.finished()) {
       const Real t = increments.step_time() + increments.increment();
@@ -353,17 +360,20 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
                                        u_step_start, u_step_start);
 
       const VecX dT = dT_prev * (1 - ramp) + dT_end * ramp;
-      // Iteration 1 starts from the converged state and moves the prescribed dofs to their new
-      // values through the linearised system; later iterations correct the free dofs only.
+      // Iteration 1 starts from the static predictor's extrapolation of the converged state
+      // (the converged state itself in an increment that starts a step) and moves the
+      // prescribed dofs to their new values through the linearised system; later iterations
+      // correct the free dofs only.
       const Real t_old = increments.step_time();
-      const VecX g_old = prescribed_values(model, step, dofs, t_old, total_time_start + t_old,
-                                           t_old / period, u_step_start, u_step_start);
-      VecX x_trial = x;
+      const VecX u_start = predictor.start(u, increments.increment());
+      VecX x_trial(dofs.n_equations()), g_old(dofs.n_prescribed());
+      for (int eq = 0; eq < dofs.n_equations(); ++eq) x_trial[eq] = u_start[dofs.equation_dof(eq)];
+      for (int k = 0; k < dofs.n_prescribed(); ++k) g_old[k] = u_start[dofs.prescribed_dof(k)];
       VecX u_trial = dofs.expand(x_trial, g_old);
       const VecX no_step = VecX::Zero(dofs.n_prescribed());
       ContactEvaluation contact_eval{contact.empty() ? nullptr : &contact, 0};
       if (!contact.empty()) {
-        contact.begin_increment(u_trial,
+        contact.begin_increment(u,  // pairings at the converged state, not the prediction
                                 {.step = step_no, .increment = increments.increment_number(),
                                  .fraction_start = t_old / period, .fraction_end = ramp},
                                 threads);
@@ -442,6 +452,7 @@ void run_nonlinear_static(const model::Model& model, const NonlinearOptions& opt
         }
         if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
           convergence.commit_increment();
+          predictor.converged(u, u_trial, increments.increment());
           x = x_trial;
           u = u_trial;
           const int increment_no = increments.increment_number();

@@ -1,7 +1,9 @@
 // C3D8R hourglass control: Flanagan & Belytschko (1981) orthogonal hourglass vectors with a
 // stiffness-type coefficient. Scaling measured against ccx 2.20 (pure hourglass modes on
 // boxes): k = 0.032 * E * sum_iI(B_iI^2) / V, with B_iI = integral of dN_I/dx_i over the element,
-// independent of Poisson's ratio.
+// independent of Poisson's ratio, for linear elasticity; for a *PLASTIC material ccx puts the
+// current C_1111 of the material tangent in place of E (measured: lambda + 2 mu at rest, and
+// following the xx entry under stretch in x or y, elastic or yielding).
 #include "core/error.hpp"
 #include "element/quadrature.hpp"
 #include "element/solid_kernels.hpp"
@@ -35,7 +37,7 @@ void mean_gradients(const MatX3& X, ShapeGrad& b, Real& volume) {
   b /= volume;
 }
 
-void hourglass_stiffness(const MatX3& X, const LinearElastic& mat, MatX& Khg) {
+void hourglass_stiffness(const MatX3& X, Real modulus, MatX& Khg) {
   ShapeGrad bg;
   Real volume = 0;
   mean_gradients(X, bg, volume);
@@ -45,7 +47,7 @@ void hourglass_stiffness(const MatX3& X, const LinearElastic& mat, MatX& Khg) {
   const Eigen::Matrix<Real, 8, 3> Xf = X;
   // gamma = (h - b (X^T h)) / 8: orthogonal to the linear field.
   const Eigen::Matrix<Real, 8, 4> gamma = (h - b * (Xf.transpose() * h)) / 8;
-  const Real k = kHourglassScale * mat.young * sum_BB / volume;
+  const Real k = kHourglassScale * modulus * sum_BB / volume;
   const Eigen::Matrix<Real, 8, 8> G = k * gamma * gamma.transpose();
   Khg.setZero(24, 24);
   for (int a = 0; a < 8; ++a)

@@ -3,6 +3,7 @@
 // det(J0)/det(J) (Taylor, Beresford & Wilson 1976) so the patch test is passed; the internal
 // DOFs are condensed statically on the element.
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include "core/error.hpp"
 #include "element/quadrature.hpp"
@@ -29,13 +30,19 @@ CentroidFrame centroid_frame(const MatX3& X) {
   return {g0.J.inverse().transpose(), g0.detJ};
 }
 
-// Strain matrix of the incompatible modes at natural point xi.
-GMatrix g_matrix(const CentroidFrame& c, const Vec3& xi, Real detJ) {
+// Physical gradients of the three modes at natural point xi (3 x 3, one row per mode): the
+// natural gradients mapped with the centroid Jacobian as shape-function gradients are,
+// dphi J0^-T (point_geometry), scaled by det(J0)/det(J).
+ShapeGrad mode_gradients(const CentroidFrame& c, const Vec3& xi, Real detJ) {
   ShapeGrad dphi = ShapeGrad::Zero(3, 3);
   for (int m = 0; m < 3; ++m) dphi(m, m) = -2 * xi(m);
-  const ShapeGrad dphidx = (c.det / detJ) * (dphi * c.inv_jt.transpose());
+  return (c.det / detJ) * (dphi * c.inv_jt);
+}
+
+// Strain matrix of the incompatible modes at natural point xi.
+GMatrix g_matrix(const CentroidFrame& c, const Vec3& xi, Real detJ) {
   BMatrix G;
-  b_matrix(dphidx, G);
+  b_matrix(mode_gradients(c, xi, detJ), G);
   return G;
 }
 
@@ -99,6 +106,30 @@ void incompatible_strains(const MatX3& X, const LinearElastic& mat, const MatX3&
     b_matrix(g.dNdx, B);
     strains.row(p) = (B * ue + g_matrix(c, rule[p].xi, g.detJ) * alpha).transpose();
   }
+}
+
+std::vector<KernelPoint> incompatible_kernel_points(const MatX3& X, const VecX& dT) {
+  const CentroidFrame c = centroid_frame(X);
+  const auto rule = volume_rule(ElementType::C3D8I);
+  std::vector<KernelPoint> points(rule.size());
+  for (std::size_t k = 0; k < rule.size(); ++k) {
+    const PointGeometry g = point_geometry(Topology::Hex8, X, rule[k].xi);
+    KernelPoint& p = points[k];
+    p.dNdX.resize(11, 3);
+    p.dNdX.topRows(8) = g.dNdx;
+    p.dNdX.bottomRows(3) = mode_gradients(c, rule[k].xi, g.detJ);
+    p.dv = rule[k].weight * g.detJ;
+    p.dT = point_temperature(ElementType::C3D8I, rule[k].xi, g.N, dT);
+  }
+  return points;
+}
+
+Mat3 incompatible_frame_rotation(const MatX3& X, const MatX3& u) {
+  const Mat3 F = deformation_gradient(point_geometry(Topology::Hex8, X, Vec3::Zero()).dNdx, u);
+  const Eigen::JacobiSVD<Mat3> svd(F, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 U = svd.matrixU();
+  if ((U * svd.matrixV().transpose()).determinant() < 0) U.col(2) *= -1;  // proper rotation
+  return U * svd.matrixV().transpose();
 }
 
 }  // namespace kontakt::element

@@ -61,7 +61,7 @@ void recover(ElementType type, const MatX3& X, const LinearElastic& mat, const M
   }
   if (type == ElementType::C3D8R) {
     MatX Khg;
-    hourglass_stiffness(X, mat, Khg);
+    hourglass_stiffness(X, mat.young, Khg);
     out.internal_force += Khg * Eigen::Map<const VecX>(u.data(), u.size());
   }
 }

@@ -90,7 +90,7 @@ void linear_stiffness(ElementType type, const MatX3& X, const LinearElastic& mat
   }
   if (type == ElementType::C3D8R) {
     MatX Khg;
-    hourglass_stiffness(X, mat, Khg);
+    hourglass_stiffness(X, mat.young, Khg);
     K += Khg;
   }
 }

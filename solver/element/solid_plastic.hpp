@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "element/element_state.hpp"
 #include "element/element_type.hpp"
 #include "element/solid_linear.hpp"
 #include "material/j2_small_strain.hpp"
@@ -19,14 +20,15 @@ struct PlasticResult {
   MatX6 strain;          ///< n_ip x 6 total strain, tensor shear components
   VecX peeq;             ///< n_ip equivalent plastic strain
   VecX energy_density;   ///< n_ip elastic strain energy density
-  std::vector<material::J2State> state;  ///< trial point states
+  ElementState state;    ///< trial state: point states, C3D8I's mode amplitudes
 };
 
-/// One element for nodal displacements u (n x 3), from the committed point states `committed`
-/// (n_ip). C3D8R adds its elastic hourglass stiffness; C3D8I is not available (SolverError).
+/// One element for nodal displacements u (n x 3), from the committed state (n_ip point states;
+/// C3D8I: the mode amplitudes its local solve starts from, empty for zero). C3D8R adds its
+/// elastic hourglass stiffness; C3D8I condenses its incompatible modes by a local Newton
+/// iteration (SolverError if it fails).
 void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
                      const material::HardeningTable& hardening, const MatX3& u, const VecX& dT,
-                     const std::vector<material::J2State>& committed, bool want_tangent,
-                     PlasticResult& out);
+                     const ElementState& committed, bool want_tangent, PlasticResult& out);
 
 }  // namespace kontakt::element

@@ -72,6 +72,13 @@ void handle_plastic(const Record& record, DeckState& state) {
       fail(record, line, material.plastic.empty()
                              ? "the first row must be at zero plastic strain (initial yield)"
                              : "plastic strains must increase from row to row");
+    // The return mapping needs 3G + H > 0: a curve that softens faster has no unique answer.
+    if (!material.plastic.empty() && material.young > 0) {
+      const auto [s0, e0] = material.plastic.back();
+      const Real shear = material.young / (2 * (1 + material.poisson));
+      if (!((stress - s0) / (strain - e0) > -3 * shear))
+        fail(record, line, "the curve softens faster than -3G (G the shear modulus of *ELASTIC)");
+    }
     material.plastic.emplace_back(stress, strain);
   }
 }

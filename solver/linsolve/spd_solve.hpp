@@ -1,8 +1,12 @@
 // Solving a symmetric stiffness system robustly: Cholesky, a residual check, and a stabilised
 // retry for singular-but-consistent systems (zero-energy modes the loads do not excite, such
 // as hourglass modes of one-element-thick C3D20R meshes, which ccx and Abaqus also solve).
+// Nonlinear analyses may also allow indefinite systems (a tangent past a limit point, plastic
+// zones under compression), which are then solved by LU with pivoting, as ccx's LDL^T solver
+// solves them.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "assembly/sparse_pattern.hpp"
@@ -17,28 +21,49 @@ VecX multiply_symmetric(const assembly::SparsePattern& pattern, const std::vecto
 /// What happened during one solve; the caller turns a stabilised solve into a warning.
 struct SpdSolveReport {
   bool stabilised = false;   ///< K had a zero-energy mode; solved with K + delta*diag(K)
+  bool indefinite = false;   ///< K was indefinite; solved by LU (allow_indefinite only)
   int singular_equation = -1;
   Real relative_residual = 0;  ///< |b - K x| / |b| of the returned solution
 };
 
 /// Solves K x = b with a Cholesky factorisation held by `solver` (analysed for `pattern`).
 /// When `refactorise` is false the existing factorisation is reused (K unchanged).
-/// Throws SingularMatrix when K is singular and the loads excite the singular mode.
+/// Throws SingularMatrix when K is singular and the loads excite the singular mode, and when K
+/// is indefinite unless `allow_indefinite` is set (then LU with pivoting on the full matrix,
+/// built from the upper triangle; its symbolic analysis is kept while the pattern holds).
 class SpdSolve {
  public:
-  explicit SpdSolve(LinearSolver& solver) : solver_(solver) {}
+  explicit SpdSolve(LinearSolver& solver, bool allow_indefinite = false)
+      : solver_(solver), allow_indefinite_(allow_indefinite) {}
   void factorise(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
                  SpdSolveReport& report);
   VecX solve(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
              const VecX& b, SpdSolveReport& report);
 
-  /// Relative stabilisation of the diagonal, and the residual a solution must reach.
+  /// Relative stabilisation of the diagonal; the residual |r| / |b| a stabilised solution must
+  /// reach, and the normwise backward error every other solution must reach.
   static constexpr Real kStabilisation = 1e-9;
   static constexpr Real kResidualTolerance = 1e-8;
+  static constexpr Real kBackwardErrorTolerance = 1e-12;
 
  private:
+  /// The full matrix of an upper-triangular pattern for the LU fallback: its pattern and, per
+  /// full entry, the position of its value in the upper storage.
+  struct FullMatrix {
+    assembly::SparsePattern pattern;
+    std::vector<Index> source;
+    std::vector<Index> of_col_start;  ///< the upper pattern it was built from
+    std::vector<int> of_row_index;
+  };
+  void factorise_indefinite(const assembly::SparsePattern& pattern,
+                            const std::vector<Real>& values);
+
   LinearSolver& solver_;
+  bool allow_indefinite_;
   bool stabilised_ = false;
+  bool indefinite_ = false;
+  std::unique_ptr<LinearSolver> lu_;
+  FullMatrix full_;
 };
 
 }  // namespace kontakt::linsolve

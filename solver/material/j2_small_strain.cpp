@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <string>
-
-#include "core/error.hpp"
 
 namespace kontakt::material {
 
@@ -28,63 +25,17 @@ Real tensor_norm(const Vec6& t) {
   return std::sqrt(t.head<3>().squaredNorm() + 2.0 * t.tail<3>().squaredNorm());
 }
 
-/// Yield stress of segment k's linear extension at alpha (k = last: constant tail).
-Real segment_yield(const HardeningTable& table, std::size_t k, Real alpha) {
-  const auto& p = table.points;
-  if (k + 1 >= p.size()) return p.back().first;
-  const Real h = (p[k + 1].first - p[k].first) / (p[k + 1].second - p[k].second);
-  return p[k].first + h * (alpha - p[k].second);
-}
+}  // namespace
 
-Real segment_slope(const HardeningTable& table, std::size_t k) {
-  const auto& p = table.points;
-  if (k + 1 >= p.size()) return 0.0;
-  return (p[k + 1].first - p[k].first) / (p[k + 1].second - p[k].second);
-}
-
-void check_elastic(Real young, Real poisson) {
+void check_elastic_constants(Real young, Real poisson) {
   if (!(young > 0.0) || !std::isfinite(young))
     throw std::invalid_argument("J2 plasticity: Young's modulus must be positive and finite");
   if (!(poisson > -1.0 && poisson < 0.5))
     throw std::invalid_argument("J2 plasticity: Poisson's ratio must lie in (-1, 0.5)");
 }
 
-}  // namespace
-
-void HardeningTable::validate() const {
-  if (points.empty())
-    throw std::invalid_argument("*PLASTIC: hardening table has no data lines");
-  if (points.front().second != 0.0)
-    throw std::invalid_argument(
-        "*PLASTIC: the first data line must be at equivalent plastic strain 0 (initial yield)");
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const auto [s, e] = points[k];
-    if (!std::isfinite(s) || !std::isfinite(e) || s < 0.0)
-      throw std::invalid_argument("*PLASTIC: data line " + std::to_string(k + 1) +
-                                  ": yield stress must be finite and >= 0");
-    if (k > 0 && !(e > points[k - 1].second))
-      throw std::invalid_argument("*PLASTIC: data line " + std::to_string(k + 1) +
-                                  ": equivalent plastic strain must be strictly ascending");
-  }
-}
-
-std::size_t HardeningTable::segment(Real alpha) const {
-  // First row whose plastic strain exceeds alpha; the segment starts one row before.
-  const auto it = std::upper_bound(points.begin(), points.end(), alpha,
-                                   [](Real a, const std::pair<Real, Real>& p) { return a < p.second; });
-  if (it == points.begin()) return 0;  // alpha < 0: clamp to the first segment
-  return static_cast<std::size_t>(it - points.begin()) - 1;
-}
-
-Real HardeningTable::yield(Real alpha) const {
-  if (alpha <= points.front().second) return points.front().first;
-  return segment_yield(*this, segment(alpha), alpha);
-}
-
-Real HardeningTable::slope(Real alpha) const { return segment_slope(*this, segment(alpha)); }
-
 Mat6 isotropic_elastic_stiffness(Real young, Real poisson) {
-  check_elastic(young, poisson);
+  check_elastic_constants(young, poisson);
   const Real mu = young / (2.0 * (1.0 + poisson));
   const Real lambda = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
   Mat6 c = Mat6::Zero();
@@ -98,7 +49,7 @@ Real von_mises(const Vec6& stress) { return std::sqrt(1.5) * tensor_norm(deviato
 
 J2Result j2_return_map(Real young, Real poisson, const HardeningTable& table,
                        const J2State& committed, const Vec6& strain, Real thermal_strain) {
-  check_elastic(young, poisson);
+  check_elastic_constants(young, poisson);
   table.validate();
   const Real mu = young / (2.0 * (1.0 + poisson));
   const Real bulk = young / (3.0 * (1.0 - 2.0 * poisson));
@@ -131,43 +82,8 @@ J2Result j2_return_map(Real young, Real poisson, const HardeningTable& table,
     return out;
   }
 
-  // Local Newton on dgamma (= delta alpha) for
-  //   r(dg) = q_trial - 3 mu dg - yield(alpha_n + dg) = 0.
-  // The table is piecewise linear, so on one segment a Newton step is exact. A step
-  // that leaves the current segment is stopped at the breakpoint and the iteration
-  // continues with the next segment's slope; r is strictly decreasing (3 mu + H > 0
-  // is required) so the walk ends on the segment holding the unique root.
-  std::size_t k = table.segment(alpha_n);
-  Real dg = 0.0;
-  const Real scale = std::max(q_trial, yield_n);
-  const int max_iter = static_cast<int>(table.points.size()) + 20;
-  bool converged = false;
-  for (int it = 0; it < max_iter; ++it) {
-    const Real h = segment_slope(table, k);
-    const Real denom = 3.0 * mu + h;
-    if (!(denom > 0.0))
-      throw std::invalid_argument(
-          "*PLASTIC: softening slope steeper than -3G makes the return mapping ill-posed");
-    const Real r = q_trial - 3.0 * mu * dg - segment_yield(table, k, alpha_n + dg);
-    if (std::abs(r) <= 1e-13 * scale && it > 0) {
-      converged = true;
-      break;
-    }
-    const Real next = dg + r / denom;
-    if (k + 1 < table.points.size() && alpha_n + next > table.points[k + 1].second) {
-      dg = table.points[k + 1].second - alpha_n;  // stop at the breakpoint
-      ++k;
-      continue;
-    }
-    dg = next;
-  }
-  if (!converged) {
-    const Real r = q_trial - 3.0 * mu * dg - segment_yield(table, k, alpha_n + dg);
-    if (!(std::abs(r) <= 1e-10 * scale) || !(dg >= 0.0))
-      throw NonConvergence("J2 return mapping: local Newton iteration did not converge");
-  }
-
-  const Real h = segment_slope(table, k);
+  const RadialReturn ret = solve_radial_return(table, alpha_n, q_trial, mu);
+  const Real dg = ret.delta_alpha, h = ret.slope;
   const Vec6 n = s_trial / s_norm;  // unit deviatoric flow direction, tensor shear
   const Real theta = 1.0 - 3.0 * mu * dg / q_trial;
   const Real theta_bar = 3.0 * mu / (3.0 * mu + h) - (1.0 - theta);

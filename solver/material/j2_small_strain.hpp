@@ -10,35 +10,10 @@
 //   * Tangent: d(stress)/d(engineering strain), 6x6, symmetric.
 #pragma once
 
-#include <utility>
-#include <vector>
-
 #include "core/types.hpp"
+#include "material/hardening_table.hpp"
 
 namespace kontakt::material {
-
-/// Isotropic hardening curve as given under ccx/Abaqus *PLASTIC (HARDENING=ISOTROPIC):
-/// rows of (von Mises yield stress, equivalent plastic strain), plastic strain strictly
-/// ascending, first row at plastic strain 0 (initial yield). One row = perfectly
-/// plastic. Linear between rows; beyond the last row the yield stress stays at the last
-/// value (slope 0) -- what ccx does (plinterpol.f: f = last stress, df = 0, with a
-/// warning); the ccx manual itself does not document the extrapolation.
-struct HardeningTable {
-  /// (yield stress, equivalent plastic strain) pairs, in *PLASTIC column order.
-  std::vector<std::pair<Real, Real>> points;
-
-  /// Throws std::invalid_argument when empty, the first plastic strain is not 0, the
-  /// plastic strains are not strictly ascending, or a yield stress is negative or
-  /// not finite. The deck reader should wrap the message into an InputError.
-  void validate() const;
-  /// Yield stress at equivalent plastic strain alpha >= 0.
-  Real yield(Real alpha) const;
-  /// Right derivative d(yield)/d(alpha) at alpha (0 beyond the last row).
-  Real slope(Real alpha) const;
-  /// Index k of the segment [points[k], points[k+1]) containing alpha; returns
-  /// points.size()-1 for the constant tail beyond the last row.
-  std::size_t segment(Real alpha) const;
-};
 
 /// Internal variables of one integration point.
 struct J2State {
@@ -54,6 +29,9 @@ struct J2Result {
   Real delta_alpha = 0;         ///< increment of equivalent plastic strain
 };
 
+/// Throws std::invalid_argument unless 0 < E < inf and -1 < nu < 0.5.
+void check_elastic_constants(Real young, Real poisson);
+
 /// Isotropic linear-elastic stiffness (engineering shear strain -> stress).
 Mat6 isotropic_elastic_stiffness(Real young, Real poisson);
 
@@ -65,7 +43,7 @@ Real von_mises(const Vec6& stress);
 /// from the normal components before the constitutive update. The committed state is
 /// not modified; commit result.state once the global iteration has converged.
 /// Throws std::invalid_argument on bad data (E <= 0, nu outside (-1, 0.5), invalid
-/// table, softening slope <= -3G) and NonConvergence if the local iteration fails.
+/// table, softening slope <= -3G) and SolverError if the local iteration fails.
 J2Result j2_return_map(Real young, Real poisson, const HardeningTable& table,
                        const J2State& committed, const Vec6& strain,
                        Real thermal_strain = 0);

@@ -8,7 +8,7 @@ every node of that face), loaded on the end face x = L by either
                    (*DLOAD, face P4 of C3D8 / C3D20: axial compression),
 one *STEP with *STATIC and *NODE PRINT of U for the end-face centre line only (so output stays
 cheap). C3D8 or C3D20 on an nx x ny x ny grid with nx = 10 ny, the smallest grid with at least
---dofs degrees of freedom."""
+--dofs degrees of freedom. With `plastic` rows the steel also gets a *PLASTIC hardening curve."""
 import argparse
 import math
 
@@ -28,8 +28,9 @@ def grid_size(element, dofs):
     raise ValueError("too many dofs")
 
 
-def write_block(path, element, dofs, nlgeom=False, load=1000.0, load_type="cload"):
-    """Writes the deck; returns (degrees of freedom, elements)."""
+def write_block(path, element, dofs, nlgeom=False, load=1000.0, load_type="cload", plastic=()):
+    """Writes the deck; `plastic`: (yield stress, equivalent plastic strain) rows of *PLASTIC,
+    none for an elastic block. Returns (degrees of freedom, elements)."""
     nx, ny, nz = grid_size(element, dofs)
     quadratic = element == "C3D20"
     m = 2 if quadratic else 1  # node lattice step per element
@@ -79,8 +80,10 @@ def write_block(path, element, dofs, nlgeom=False, load=1000.0, load_type="cload
     lines += [", ".join(map(str, centre[s:s + 16])) for s in range(0, len(centre), 16)]
     lines.append("*NSET, NSET=TIP")
     lines += [", ".join(map(str, tip[s:s + 16])) for s in range(0, len(tip), 16)]
-    lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", "210000, 0.3",
-              "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL",
+    lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", "210000, 0.3"]
+    if plastic:
+        lines += ["*PLASTIC"] + [f"{s:.12g}, {e:.12g}" for s, e in plastic]
+    lines += ["*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL",
               "*BOUNDARY", "FIX, 1, 3"]
     lines += ["*STEP, NLGEOM", "*STATIC", "0.25, 1.0"] if nlgeom else ["*STEP", "*STATIC"]
     if load_type == "pressure":  # face 4 (nodes 2-6-7-3) is the x = +1 face of C3D8/C3D20

@@ -185,8 +185,9 @@ def run_one(source_dir, name, args):
     except subprocess.TimeoutExpired:
         return "TIMEOUT", None, f"> {args.timeout} s"
     if proc.returncode != 0:
-        first = next((ln.strip() for ln in proc.stderr.splitlines() if ln.strip()),
-                     "(no message)")
+        lines = [ln.strip() for ln in proc.stderr.splitlines() if ln.strip()]
+        first = next((ln for ln in lines if "error" in ln.lower()),  # not a warning before it
+                     lines[0] if lines else "(no message)")
         return "ERROR", None, f"exit {proc.returncode}: {first}"
     ours_path = os.path.join(run_dir, "out", name + ".dat")
     if not os.path.exists(ours_path):

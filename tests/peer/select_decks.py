@@ -18,16 +18,20 @@ the FIRST check a deck breaks is its exclusion reason:
       - *DLOAD: load label P1-P6 only (face pressures);
       - *STEP: no NLGEOM (unless NLGEOM=NO), no PERTURBATION;
       - *NODE PRINT: variables from NODE_PRINT_VARIABLES (U, RF) only;
-        *EL PRINT: variables from EL_PRINT_VARIABLES (S, E, EVOL, ENER, ELSE) only
+        *EL PRINT: variables from EL_PRINT_VARIABLES (S, E, EVOL, ENER, ELSE, PEEQ) only
         (a deck printing any other variable is excluded: there is nothing to compare it with);
   (c) the deck has at least one *NODE PRINT or *EL PRINT (else there is nothing to compare).
 
 The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same rule except
-that it requires a *STEP with NLGEOM instead of forbidding it, and excludes C3D8I.
+that it requires a *STEP with NLGEOM instead of forbidding it, and admits *PLASTIC with
+isotropic hardening: HARDENING= absent or ISOTROPIC, one hardening curve (no temperature
+column, or the same temperature on every line). The linear set keeps *PLASTIC out: ccx
+switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
+whatever its *STEP says.
 
 The contact peer set (`contact=True`, run_peer.py --contact): frictionless penalty contact.
-The same rule, with NLGEOM allowed (not required; C3D8I excluded, the solver has no nonlinear
-C3D8I), the keywords of CONTACT_KEYWORDS admitted, and:
+The same rule, with NLGEOM allowed (not required; C3D8I excluded), the keywords of
+CONTACT_KEYWORDS admitted, and:
   - *CONTACT PAIR: TYPE= NODE TO SURFACE or SURFACE TO SURFACE (not MORTAR and its kin);
   - *SURFACE BEHAVIOR: PRESSURE-OVERCLOSURE= LINEAR, EXPONENTIAL, TABULAR or HARD (not TIED:
     tied contact comes with friction, later);
@@ -67,7 +71,7 @@ CONTACT_TYPES = {"NODE TO SURFACE", "SURFACE TO SURFACE"}
 PRESSURE_OVERCLOSURES = {"LINEAR", "EXPONENTIAL", "TABULAR", "HARD"}
 CONTACT_VARIABLES = {"CDIS", "CSTR", "CELS"}
 NODE_PRINT_VARIABLES = {"U", "RF"}
-EL_PRINT_VARIABLES = {"S", "E", "EVOL", "ENER", "ELSE"}
+EL_PRINT_VARIABLES = {"S", "E", "EVOL", "ENER", "ELSE", "PEEQ"}
 
 _INCLUDE = re.compile(r"(?im)^\s*\*\s*INCLUDE\s*,\s*INPUT\s*=\s*([^\s,]+)")
 
@@ -172,6 +176,19 @@ def _contact_limit(keyword, params, data):
     return None
 
 
+def plastic_exclusion(params, data):
+    """Why a *PLASTIC record is outside the nonlinear set, or None: isotropic hardening with a
+    single curve only."""
+    hardening = params.get("HARDENING", "ISOTROPIC").upper()
+    if hardening != "ISOTROPIC":
+        return f"*PLASTIC, HARDENING={hardening}"
+    temperatures = {fields[2] for fields in ([f.strip() for f in line.split(",")] for line in data)
+                    if len(fields) > 2 and fields[2]}
+    if len(temperatures) > 1:
+        return "*PLASTIC with temperature-dependent curves"
+    return None
+
+
 def exclusion_reason(path, nlgeom=False, contact=False):
     """THE qualification rule (see the module docstring): None when the deck at `path`
     qualifies, otherwise a short text naming the first check it breaks."""
@@ -186,8 +203,13 @@ def exclusion_reason(path, nlgeom=False, contact=False):
             etype = params.get("TYPE", "").upper()
             if etype not in ELEMENT_TYPES:
                 return f"element {etype or '(no TYPE)'}"
-            if (nlgeom or contact) and etype == "C3D8I":
-                return "C3D8I under NLGEOM" if nlgeom else "C3D8I in the contact set"
+            if contact and etype == "C3D8I":
+                return "C3D8I in the contact set"
+            continue
+        if keyword == "PLASTIC" and nlgeom:  # (b), nonlinear set only
+            reason = plastic_exclusion(params, data)
+            if reason:
+                return reason
             continue
         if keyword not in keywords:  # (b)
             return f"keyword *{keyword}"

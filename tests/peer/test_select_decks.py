@@ -63,13 +63,29 @@ class SelectDecks(unittest.TestCase):
             ("*STEP\n", "*STEP, NLGEOM\n"): "*STEP, NLGEOM",
             ("*STEP\n", "*STEP, PERTURBATION\n"): "*STEP, PERTURBATION",
             ("U, RF", "U, NT"): "*NODE PRINT of NT",
-            ("S, E", "S, PEEQ"): "*EL PRINT of PEEQ",
+            ("S, E", "S, SDV"): "*EL PRINT of SDV",
+            ("210000, 0.3\n", "210000, 0.3\n*PLASTIC\n800, 0\n"): "keyword *PLASTIC",
             ("*CLOAD\n", "*CLOAD, AMPLITUDE=A, TIME DELAY=1\n"): "*CLOAD, TIME DELAY",
         }
         for (old, new), reason in cases.items():
             with self.subTest(reason=reason):
                 self.assertIn(old, GOOD)
                 self.assertEqual(exclusion_reason(self.deck(GOOD.replace(old, new, 1))), reason)
+
+    def test_nonlinear_set_admits_isotropic_plasticity_and_c3d8i(self):
+        nl = GOOD.replace("*STEP\n", "*STEP, NLGEOM\n").replace("TYPE=C3D8,", "TYPE=C3D8I,")
+        plastic = nl.replace("210000, 0.3\n", "210000, 0.3\n*PLASTIC\n800, 0, 20\n900, 0.1, 20\n")
+        self.assertIsNone(exclusion_reason(self.deck(plastic), nlgeom=True))
+        cases = {
+            ("*PLASTIC\n", "*PLASTIC, HARDENING=KINEMATIC\n"): "*PLASTIC, HARDENING=KINEMATIC",
+            ("900, 0.1, 20\n", "900, 0.1, 20\n700, 0, 500\n"):
+                "*PLASTIC with temperature-dependent curves",
+        }
+        for (old, new), reason in cases.items():
+            with self.subTest(reason=reason):
+                self.assertIn(old, plastic)
+                text = plastic.replace(old, new, 1)
+                self.assertEqual(exclusion_reason(self.deck(text), nlgeom=True), reason)
 
     def test_nothing_printed(self):
         text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")

@@ -64,7 +64,9 @@ X1, 1, 1, 0.5
     EXPECT_NEAR(f.E(k, 0), E11, 1e-9);
     EXPECT_NEAR(f.E(k, 1), E22, 1e-9);
   }
-  EXPECT_NEAR(f.U(6, 1), lateral - 1, 1e-9);  // node 7 contracts laterally
+  // node 7 contracts laterally; ccx's "linear" rule (r <= 1e-8 q~) may end the iteration
+  // before the tight correction tolerance does, which leaves ~1e-9 here
+  EXPECT_NEAR(f.U(6, 1), lateral - 1, 1e-8);
   // The reactions on x = 0 carry the first Piola-Kirchhoff force F11 * S11 * A0.
   Real reaction = 0;
   for (int n : {0, 3, 4, 7}) reaction += f.RF(n, 0);
@@ -201,8 +203,126 @@ S, PEEQ
   }
 }
 
-TEST(NonlinearStatic, PlasticityWithNlgeomIsRefusedClearly) {
-  std::string deck = cube("*STEP, NLGEOM\n*STATIC\n*CLOAD\nX1, 1, 1.\n*END STEP\n");
-  deck.replace(deck.find("1000, 0.25"), 10, "1000, 0.25\n*PLASTIC\n10., 0.");
-  EXPECT_THROW(solve(deck), InputError);
+/// The cube deck with an elastic-plastic material: E, nu, then the *PLASTIC rows.
+std::string plastic_cube(const std::string& rest, const std::string& plastic_rows,
+                         const std::string& element = "C3D8") {
+  std::string deck = cube(rest);
+  deck.replace(deck.find("1000, 0.25"), 10, "200000, 0.3\n*PLASTIC\n" + plastic_rows);
+  deck.replace(deck.find("TYPE=C3D8,"), 10, "TYPE=" + element + ",");
+  return deck;
+}
+
+TEST(NonlinearStatic, FiniteStrainBarFollowsTheTrueStressCurveExactly) {
+  // Stretch 1.3 with free lateral faces under NLGEOM. Exact for any increment size: the Cauchy
+  // (true) stress of a yielding point is the *PLASTIC curve at its PEEQ (ccx's yield test is
+  // on the Cauchy stress), and the volume follows the Kirchhoff pressure, K/2 (J^2 - 1) =
+  // J sigma / 3, so the lateral stretch is sqrt(J / 1.3) whatever the plastic flow did.
+  const auto c = solve(plastic_cube(R"(*STEP, NLGEOM
+*STATIC, DIRECT
+0.1, 1.0
+*BOUNDARY
+X1, 1, 1, 0.3
+*EL PRINT, ELSET=EALL
+S, PEEQ
+*END STEP
+)",
+                                    "200., 0.\n300., 0.1\n320., 0.3"),
+                       tight_options());
+  ASSERT_EQ(c.frames.size(), 10u);
+  const Real K = 200000 / (3 * (1 - 2 * 0.3));
+  auto curve = [](Real a) { return a < 0.1 ? 200 + 1000 * a : 300 + 100 * (a - 0.1); };
+  for (const auto& f : c.frames) {
+    const Real stretch = 1 + 0.3 * f.step_time, sigma = f.S(0, 0);
+    ASSERT_GT(f.PEEQ(0), 0.0) << "yielded from the first increment on";
+    for (Index k = 0; k < f.S.rows(); ++k) {
+      EXPECT_NEAR(f.S(k, 0), curve(f.PEEQ(k)), 1e-7 * sigma) << "stretch " << stretch;
+      EXPECT_NEAR(f.S(k, 1), 0.0, 1e-7 * sigma);
+    }
+    // J from the pressure: a quadratic K/2 J^2 - sigma/3 J - K/2 = 0.
+    const Real b = sigma / 3, J = (b + std::sqrt(b * b + K * K)) / K;
+    EXPECT_NEAR(f.U(6, 1), std::sqrt(J / stretch) - 1, 1e-9) << "stretch " << stretch;
+  }
+}
+
+TEST(NonlinearStatic, PlasticEnergyIsTheWorkSummedOverTheIncrementsAsCcx) {
+  // ccx 2.20 prints ENER 66.84480, 89.05290, 105.0671 for the cube stretched by 10 % in 1, 2 and
+  // 10 increments (E = 210000, nu = 0.3, *PLASTIC 800 / 1600 at 0.1): the trapezoidal sum of
+  // S : dE over the increments, not a stored energy.
+  const Real ccx[3][2] = {{1.0, 66.84480}, {0.5, 89.05290}, {0.1, 105.0671}};
+  for (const auto& [increment, ener] : ccx) {
+    std::string deck = cube("*STEP, NLGEOM\n*STATIC, DIRECT\n" + std::to_string(increment) +
+                            ", 1.0\n*BOUNDARY\nX1, 1, 1, 0.1\n*EL PRINT, ELSET=EALL\nS, ENER\n"
+                            "*END STEP\n");
+    deck.replace(deck.find("1000, 0.25"), 10, "210000, 0.3\n*PLASTIC\n800., 0.\n1600., 0.1");
+    const auto c = solve(deck);
+    for (Index k = 0; k < 8; ++k)
+      EXPECT_NEAR(c.frames.back().ENER(k), ener, 1e-4 * ener) << increment;
+  }
+  // Held at its length and heated by alpha dT = 0.018 (4 increments): the total strain along
+  // the bar does no work, the mechanical one does; ccx prints 13.51453.
+  std::string held = cube(R"(*INITIAL CONDITIONS, TYPE=TEMPERATURE
+NALL, 0.
+*STEP, NLGEOM
+*STATIC, DIRECT
+0.25, 1.0
+*BOUNDARY
+X1, 1, 1, 0.
+*TEMPERATURE
+NALL, 1500.
+*EL PRINT, ELSET=EALL
+S, ENER
+*END STEP
+)");
+  held.replace(held.find("1000, 0.25"), 10,
+               "210000, 0.3\n*PLASTIC\n800., 0.\n1600., 0.1\n*EXPANSION, ZERO=0.\n12.E-6");
+  const auto c = solve(held);
+  for (Index k = 0; k < 8; ++k) EXPECT_NEAR(c.frames.back().ENER(k), 13.51453, 2e-4);
+}
+
+TEST(NonlinearStatic, IncompatibleModesStayIdleInAHomogeneousPlasticStretch) {
+  // C3D8I's modes carry no strain in a homogeneous deformation: under NLGEOM and plasticity
+  // it answers exactly as C3D8.
+  const std::string step = R"(*STEP, NLGEOM
+*STATIC, DIRECT
+0.25, 1.0
+*BOUNDARY
+X1, 1, 1, 0.2
+*EL PRINT, ELSET=EALL
+S, PEEQ
+*END STEP
+)";
+  const auto brick = solve(plastic_cube(step, "200., 0.\n300., 0.1"), tight_options());
+  const auto incompatible = solve(plastic_cube(step, "200., 0.\n300., 0.1", "C3D8I"), tight_options());
+  ASSERT_EQ(brick.frames.size(), incompatible.frames.size());
+  const auto& a = brick.frames.back();
+  const auto& b = incompatible.frames.back();
+  EXPECT_LT((a.U - b.U).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((a.S - b.S).cwiseAbs().maxCoeff(), 1e-7 * a.S.cwiseAbs().maxCoeff());
+  EXPECT_LT((a.PEEQ - b.PEEQ).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+TEST(NonlinearStatic, FailedAttemptLeavesNoPlasticStrainBehind) {
+  // The first attempt (the whole load, past yield) needs a third iteration, which *CONTROLS
+  // forbids (I_C = 3): it is cut back to half the load, which is elastic. The plastic state
+  // that attempt reached must be gone: no PEEQ at half load, and the run finishes.
+  const auto c = solve(plastic_cube(R"(*STEP, NLGEOM
+*STATIC
+1.0, 1.0
+*CONTROLS, PARAMETERS=TIME INCREMENTATION
+4, 3, 9, 3, 10, 4, , 5
+*CLOAD
+X1, 1, 62.
+*EL PRINT, ELSET=EALL
+S, PEEQ
+*END STEP
+)",
+                                    "200., 0.\n300., 0.1"));
+  int cutbacks = 0;
+  for (const auto& e : c.events) cutbacks += e.kind == analysis::Event::Kind::Cutback;
+  ASSERT_GE(cutbacks, 1);
+  ASSERT_GE(c.frames.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.frames.front().step_time, 0.5);
+  EXPECT_EQ(c.frames.front().PEEQ.maxCoeff(), 0.0);
+  EXPECT_GT(c.frames.back().PEEQ.minCoeff(), 0.0);  // 248 > 200 at full load
+  EXPECT_DOUBLE_EQ(c.frames.back().step_time, 1.0);
 }

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -110,4 +112,44 @@ inline void solve_prescribed(const MatX& K, const VecX& f, const std::vector<boo
   for (Index i = 0; i < m; ++i) u(fr[i]) = uf(i);
 }
 
+/// Nodal forces of an element as a function of its nodal displacements (n x 3).
+using ForceFunction = std::function<VecX(const MatX3& u)>;
+
+/// Central-difference Jacobian d(forces)/du (3n x 3n, node-major) at u.
+inline MatX fd_jacobian(const ForceFunction& forces, const MatX3& u, Real h = 1e-6) {
+  const Index n = 3 * u.rows();
+  MatX K(n, n);
+  for (Index j = 0; j < n; ++j) {
+    MatX3 up = u, um = u;
+    up(j / 3, j % 3) += h;
+    um(j / 3, j % 3) -= h;
+    K.col(j) = (forces(up) - forces(um)) / (2 * h);
+  }
+  return K;
+}
+
+/// Taylor remainders r(t) = |f(u + t d) - f(u) - t K d| for t = 1, 1/2, 1/4 and a fixed
+/// pseudo-random direction d of size `size`.
+inline std::vector<Real> taylor_remainders(const ForceFunction& forces, const MatX3& u,
+                                           const MatX& K, Real size) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<Real> dist(-1, 1);
+  MatX3 d(u.rows(), 3);
+  for (Index k = 0; k < d.size(); ++k) d.data()[k] = size * dist(rng);
+  const VecX dv = Eigen::Map<const VecX>(d.data(), d.size());
+  const VecX f0 = forces(u);
+  std::vector<Real> remainders;
+  for (Real t : {1.0, 0.5, 0.25}) remainders.push_back((forces(u + t * d) - f0 - t * K * dv).norm());
+  return remainders;
+}
+
+/// Observed orders log2(r(t) / r(t/2)) of the Taylor remainders: about 2 when K is the
+/// derivative of f (and f is not linear there).
+inline std::vector<Real> taylor_orders(const ForceFunction& forces, const MatX3& u, const MatX& K,
+                                       Real size) {
+  const std::vector<Real> r = taylor_remainders(forces, u, K, size);
+  return {std::log2(r[0] / r[1]), std::log2(r[1] / r[2])};
+}
+
 }  // namespace kontakt::element::test
+

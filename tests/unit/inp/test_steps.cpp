@@ -281,7 +281,8 @@ TEST(inpMaterial, PlasticTableIsReadAndChecked) {
   EXPECT_DOUBLE_EQ(m.materials[0].plastic[1].second, 0.05);
   for (const std::string& bad : {std::string("\n250., 0.01"), std::string("\n250., 0.\n260., 0."),
                                  std::string(", HARDENING=KINEMATIC\n250., 0."),
-                                 std::string("\n250., 0., 20.\n260., 0.1, 100.")}) {
+                                 std::string("\n250., 0., 20.\n260., 0.1, 100."),
+                                 std::string("\n250., 0.\n0., 1e-9")}) {  // steep softening
     try {
       read_deck_text(with_plastic(bad), "p.inp");
       ADD_FAILURE() << "accepted: " << bad;

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <memory>
 
 #include "linsolve/linear_solver.hpp"
 #include "linsolve/blas_threads.hpp"
@@ -26,6 +28,13 @@ assembly::SparsePattern dense_pattern(const MatX& A, bool upper, std::vector<Rea
     p.col_start.push_back(static_cast<Index>(p.row_index.size()));
   }
   return p;
+}
+
+/// CHOLMOD, analysed for a pattern.
+std::unique_ptr<linsolve::LinearSolver> cholmod_for(const assembly::SparsePattern& p) {
+  auto solver = linsolve::make_cholmod_solver();
+  solver->analyze(p);
+  return solver;
 }
 
 MatX spd_matrix(int n) {
@@ -133,6 +142,58 @@ TEST(SpdSolve, RegularSystemIsSolvedWithoutStabilisation) {
   EXPECT_FALSE(report.stabilised);
   EXPECT_LT((A * x - b).norm(), 1e-12 * b.norm());
   EXPECT_LT((linsolve::multiply_symmetric(p, values, x) - A * x).norm(), 1e-12 * b.norm());
+}
+
+TEST(SpdSolve, IndefiniteSystemIsSolvedByLuOnlyWhenAllowed) {
+  // A symmetric stiffness with a negative eigenvalue (a tangent past a limit point), dense
+  // enough for CHOLMOD's supernodal LL^T (small sparse systems get its LDL^T, which takes
+  // indefinite matrices anyway).
+  const int n = 200;
+  MatX A = spd_matrix(n);
+  A(4, 4) = -30.0 * n;
+  const VecX b = VecX::Random(n);
+  std::vector<Real> values;
+  const auto p = dense_pattern(A, true, values);
+  const auto cholmod = cholmod_for(p);
+  linsolve::SpdSolveReport refused;
+  linsolve::SpdSolve strict(*cholmod);
+  EXPECT_THROW(strict.factorise(p, values, refused), linsolve::SingularMatrix);
+  linsolve::SpdSolve nonlinear(*cholmod, /*allow_indefinite=*/true);
+  linsolve::SpdSolveReport report;
+  nonlinear.factorise(p, values, report);
+  EXPECT_TRUE(report.indefinite);
+  const VecX x = nonlinear.solve(p, values, b, report);
+  EXPECT_LT((A * x - b).norm(), 1e-10 * b.norm());
+  // Back to a positive definite matrix in the same pattern: Cholesky again.
+  const MatX B = spd_matrix(n);
+  const auto q = dense_pattern(B, true, values);
+  nonlinear.factorise(q, values, report = {});
+  EXPECT_FALSE(report.indefinite);
+  EXPECT_LT((B * nonlinear.solve(q, values, b, report) - b).norm(), 1e-10 * b.norm());
+}
+
+TEST(SpdSolve, IllConditionedRegularSystemPassesOnItsBackwardError) {
+  // Condition 1e13: |r|/|b| stays far above round-off although the solve is as good as
+  // floating point allows; the normwise backward error is what is tested.
+  const int n = 20;
+  std::srand(11);
+  const MatX Q = MatX::Random(n, n).householderQr().householderQ();
+  VecX eigen(n);
+  for (int k = 0; k < n; ++k) eigen[k] = std::pow(10.0, 13.0 * k / (n - 1));
+  const MatX A = Q * eigen.asDiagonal() * Q.transpose();
+  const MatX As = 0.5 * (A + A.transpose());
+  std::vector<Real> values;
+  const auto p = dense_pattern(As, true, values);
+  const auto cholmod = cholmod_for(p);
+  linsolve::SpdSolve spd(*cholmod);
+  linsolve::SpdSolveReport report;
+  spd.factorise(p, values, report);
+  const VecX b = As * VecX::Ones(n);
+  const VecX x = spd.solve(p, values, b, report);
+  const VecX r = b - As * x;
+  EXPECT_LT(r.cwiseAbs().maxCoeff(),
+            1e-12 * (As.cwiseAbs().rowwise().sum().maxCoeff() * x.cwiseAbs().maxCoeff()));
+  EXPECT_FALSE(report.stabilised);
 }
 
 TEST(BlasThreads, TheInstalledBlasAcceptsAThreadCount) {
