@@ -5,6 +5,7 @@
 #include "analysis/nonlinear_static.hpp"
 #include "app/monitor_files.hpp"
 #include "app/result_writers.hpp"
+#include "contact/unsolved_interactions.hpp"
 #include "core/error.hpp"
 #include "inp/read_deck.hpp"
 #include "linsolve/blas_threads.hpp"
@@ -24,6 +25,7 @@ DeckError deck_error_of(const InputError& e) {
 /// The deck's model with the scheme override applied to every contact pair.
 model::Model read_model(const fs::path& deck, const std::optional<std::string>& scheme) {
   model::Model model = inp::read_deck(deck);
+  contact::reject_unsolved_interactions(model);
   if (!scheme) return model;
   const auto parsed = model::contact_scheme_from_name(*scheme);
   if (!parsed)

@@ -192,6 +192,7 @@ void handle_friction(const Record& record, DeckState& state) {
     state.warn(record.lines[1].where, record.keyword, "only the last data line counts");
   model::Friction friction;
   for (const DataLine& line : record.lines) friction = read_friction_line(record, line);
+  friction.where = record.where;
   if (state.open_step) {
     // *CHANGE FRICTION: every material is known by now, so the default is resolved here.
     resolve_stick_slope(state, record.lines.back().where, friction);

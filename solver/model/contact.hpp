@@ -34,6 +34,7 @@ struct SurfaceBehavior {
 struct Friction {
   Real mu = 0;
   Real stick_slope = 0;      ///< lambda
+  SourceLoc where;           ///< the *FRICTION card
 };
 
 struct SurfaceInteraction {

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -39,11 +40,15 @@ class TempDir {
 class CountingControl final : public handlers::JobControl {
  public:
   void job_queued() override { ++queued; }
-  void cancel_running(const std::string& id) override { canceled.push_back(id); }
+  void cancel_running(const std::string& id) override {
+    canceled.push_back(id);
+    if (on_cancel) on_cancel(id);
+  }
   int n_workers() const override { return 2; }
   int n_busy() const override { return 0; }
   std::atomic<int> queued{0};
   std::vector<std::string> canceled;
+  std::function<void(const std::string&)> on_cancel;  ///< observes the store at each call
 };
 
 /// One linear C3D8 cube under a tip load: parses and solves in milliseconds.
