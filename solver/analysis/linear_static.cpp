@@ -83,6 +83,11 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const model::Step& step = model.steps[s];
     const int step_no = static_cast<int>(s) + 1;
+    const auto stop_if_cancelled = [&](const char* before) {
+      if (options.cancel && options.cancel->load())
+        throw Cancelled("cancelled in step " + std::to_string(step_no) + " before " + before);
+    };
+    stop_if_cancelled("its assembly");
     events.on_event({.kind = Event::Kind::Step, .step = step_no, .wall_time = wall()});
     const Real period = step.procedure.period;
     total_time += period;
@@ -118,9 +123,11 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
 
     linsolve::SpdSolveReport report;
     VecX x;
+    stop_if_cancelled("the factorisation");
     try {
       if (!factorised) spd.factorise(plan.pattern, system.values, report);
       factorised = true;
+      stop_if_cancelled("the solve");
       x = spd.solve(plan.pattern, system.values, system.rhs, report);
     } catch (const linsolve::SingularMatrix& e) {
       rethrow_singular(model, dofs, e);

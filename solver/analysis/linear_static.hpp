@@ -2,6 +2,9 @@
 // Chosen by the plan when a model has no NLGEOM, no plasticity and no contact.
 #pragma once
 
+#include <atomic>
+#include <stdexcept>
+
 #include "analysis/events.hpp"
 #include "model/model.hpp"
 #include "output/frame.hpp"
@@ -9,7 +12,17 @@
 namespace kontakt::analysis {
 
 struct RunOptions {
-  int threads = 0;  ///< 0 = all cores
+  int threads = 0;                            ///< 0 = all cores
+  /// Polled at every step and between assembly, factorisation and output: a factorisation
+  /// itself runs to its end.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+/// The run was cancelled through the options' flag; the frames of finished steps (increments)
+/// are kept.
+class Cancelled : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 /// Receives each step's converged result.
@@ -21,7 +34,7 @@ class FrameSink {
 
 /// Solves every step of a linear model. Throws InputError for a model this analysis cannot run
 /// (the message names the step), SolverError for singular systems (naming the dofs or the
-/// unsupported body where it can).
+/// unsupported body where it can), Cancelled.
 void run_linear_static(const model::Model& model, const RunOptions& options, FrameSink& frames,
                        EventSink& events);
 

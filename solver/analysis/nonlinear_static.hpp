@@ -20,12 +20,6 @@ struct NonlinearOptions {
   std::optional<nonlinear::SolutionControls> controls;
 };
 
-/// The run was cancelled through NonlinearOptions::cancel; converged frames are kept.
-class Cancelled : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 /// Solves every step. Throws NonConvergence when an increment cannot be completed (after the
 /// frames of every converged increment were handed to `frames`), Cancelled, SolverError.
 void run_nonlinear_static(const model::Model& model, const NonlinearOptions& options,

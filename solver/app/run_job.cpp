@@ -54,7 +54,8 @@ void solve(const model::Model& model, const RunRequest& request, ResultWriters& 
       options.cancel = &cancel;
       analysis::run_nonlinear_static(model, options, writers, events);
     } else {
-      analysis::run_linear_static(model, {.threads = request.threads}, writers, events);
+      analysis::run_linear_static(model, {.threads = request.threads, .cancel = &cancel}, writers,
+                                  events);
     }
   } catch (const NonConvergence&) {
     writers.finish();

@@ -129,6 +129,30 @@ TEST_F(RunJobTest, RaisedCancelFlagStopsANonlinearRun) {
   EXPECT_TRUE(fs::exists(dir / "out" / "job.hdf")) << "results are completed on cancel";
 }
 
+TEST_F(RunJobTest, CancelStopsALinearRunBeforeItsNextStep) {
+  // The flag goes up when step 1 is solved: step 2 is neither assembled nor solved.
+  std::atomic<bool> cancel{false};
+  struct CancelAfterFirstIncrement final : analysis::EventSink {
+    std::atomic<bool>* flag;
+    std::vector<analysis::Event> events;
+    void on_event(const analysis::Event& e) override {
+      events.push_back(e);
+      if (e.kind == analysis::Event::Kind::Increment) flag->store(true);
+    }
+  } sink;
+  sink.flag = &cancel;
+  const RunOutcome r = run_job(
+      request(write("l.inp", cube("*STEP\n", "*STATIC\n") + "*STEP\n*STATIC\n*END STEP\n")), sink,
+      cancel);
+  EXPECT_EQ(r.status, RunStatus::Cancelled);
+  EXPECT_EQ(r.exit_code, 3);
+  int increments = 0;
+  for (const auto& e : sink.events) increments += e.kind == analysis::Event::Kind::Increment;
+  EXPECT_EQ(increments, 1);
+  EXPECT_EQ(sink.events.back().status, "cancelled");
+  EXPECT_TRUE(fs::exists(dir / "out" / "job.hdf"));
+}
+
 TEST_F(RunJobTest, UnwritableOutputIsAnError) {
   Recorder sink;
   RunRequest req = request(write("c.inp", cube("*STEP\n", "*STATIC\n")));
