@@ -243,14 +243,17 @@ JobPage JobStore::list_jobs(const JobQuery& query) {
   return page;
 }
 
-int JobStore::queue_position(const JobRecord& job) {
+std::optional<int> JobStore::queue_position(const JobRecord& job) {
   auto lease = read();
+  // One statement, one snapshot: the job itself counts only while it is still queued.
   Statement st(lease.db(),
                "SELECT COUNT(*) FROM jobs WHERE status = 'queued' AND "
-               "(created_ms < ? OR (created_ms = ? AND id <= ?))");
-  st.bind(1, job.created_ms).bind(2, job.created_ms).bind(3, job.id);
+               "(created_ms < ? OR (created_ms = ? AND id <= ?)) AND "
+               "EXISTS (SELECT 1 FROM jobs WHERE id = ? AND status = 'queued')");
+  st.bind(1, job.created_ms).bind(2, job.created_ms).bind(3, job.id).bind(4, job.id);
   st.step();
-  return static_cast<int>(st.integer(0));
+  const int position = static_cast<int>(st.integer(0));
+  return position > 0 ? std::optional(position) : std::nullopt;
 }
 
 std::optional<JobRecord> JobStore::claim_next() {

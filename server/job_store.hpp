@@ -57,8 +57,9 @@ class JobStore {
   std::optional<JobRecord> find_job(const std::string& id);
   std::optional<JobRecord> find_by_key(const std::string& idempotency_key);
   JobPage list_jobs(const JobQuery& query);
-  /// 1-based place of a queued job in the queue (oldest first).
-  int queue_position(const JobRecord& job);
+  /// 1-based place of a queued job in the queue (oldest first); none once a worker has
+  /// claimed it or it was canceled, however recently the record was read.
+  std::optional<int> queue_position(const JobRecord& job);
 
   /// The oldest queued job, now running (attempts + 1); nullopt when the queue is empty.
   std::optional<JobRecord> claim_next();

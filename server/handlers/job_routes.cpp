@@ -17,7 +17,7 @@ constexpr int kDefaultPageSize = 50, kMaxPageSize = 200;
 
 json document_of(ApiContext& ctx, const JobRecord& job) {
   const std::optional<int> position =
-      job.status == JobStatus::Queued ? std::optional(ctx.store.queue_position(job)) : std::nullopt;
+      job.status == JobStatus::Queued ? ctx.store.queue_position(job) : std::nullopt;
   return job_document(job, position, !ctx.store.artifacts(job.id).empty());
 }
 

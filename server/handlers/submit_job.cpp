@@ -138,7 +138,10 @@ HttpResponse deck_rejected(const app::DeckError& error, const fs::path& input_di
 }
 
 HttpResponse created(ApiContext& ctx, const JobRecord& job, bool replayed) {
-  HttpResponse r = json_response(201, job_document(job, ctx.store.queue_position(job), false));
+  // A replayed submission may be long finished; a fresh one may be claimed already.
+  const std::optional<int> position =
+      job.status == JobStatus::Queued ? ctx.store.queue_position(job) : std::nullopt;
+  HttpResponse r = json_response(201, job_document(job, position, false));
   r.headers.emplace_back("Location", "/v1/jobs/" + job.id);
   if (replayed) r.headers.emplace_back("Idempotent-Replayed", "true");
   return r;

@@ -45,6 +45,15 @@ TEST_F(JobStoreTest, InsertedJobIsQueuedWithAStatusEvent) {
   EXPECT_EQ(events[0].seq, 1);
 }
 
+TEST_F(JobStoreTest, ClaimedJobHasNoQueuePositionEvenFromAStaleRecord) {
+  const JobRecord first = store.insert_job(new_job("a")).second;
+  const JobRecord second = store.insert_job(new_job("b")).second;
+  EXPECT_EQ(store.queue_position(second), 2);
+  ASSERT_TRUE(store.claim_next());  // a worker takes `first` after its record was read
+  EXPECT_EQ(store.queue_position(first), std::nullopt);
+  EXPECT_EQ(store.queue_position(second), 1);
+}
+
 TEST_F(JobStoreTest, IdempotencyKeyReplaysOrConflicts) {
   const auto first = store.insert_job(new_job("a", "key-1", "fp"));
   const auto again = store.insert_job(new_job("a", "key-1", "fp"));
