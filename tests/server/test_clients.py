@@ -3,10 +3,14 @@
 design-loop example against a live kontaktd."""
 import csv
 import hashlib
+import http.client
+import http.server
+import json
 import os
 import subprocess
 import sys
 import tempfile
+import threading
 import unittest
 
 import decks
@@ -21,6 +25,42 @@ KONTAKTD = KONTAKT = None
 def not_converging():
     """Needs more increments than *STEP, INC= allows: fails as not converged."""
     return decks.beam(2, nlgeom=True, increments=4).replace("INC=14", "INC=2")
+
+
+class LosingProxy(http.server.ThreadingHTTPServer):
+    """Forwards requests to the daemon, but drops the connection instead of answering the
+    first POST (after the daemon has processed it): a response lost on the way back."""
+
+    def __init__(self, daemon_port):
+        self.daemon_port, self.dropped = daemon_port, []
+        super().__init__(("127.0.0.1", 0), LosingProxy.Handler)
+        threading.Thread(target=self.serve_forever, daemon=True).start()
+
+    class Handler(http.server.BaseHTTPRequestHandler):
+        def forward(self):
+            body = self.rfile.read(int(self.headers.get("Content-Length", 0)))
+            conn = http.client.HTTPConnection("127.0.0.1", self.server.daemon_port, timeout=10)
+            conn.request(self.command, self.path, body=body,
+                         headers={k: v for k, v in self.headers.items() if k.lower() != "host"})
+            r = conn.getresponse()
+            data = r.read()
+            conn.close()
+            if self.command == "POST" and not self.server.dropped:
+                self.server.dropped.append(json.loads(data)["id"])
+                self.close_connection = True
+                return
+            self.send_response(r.status)
+            for k, v in r.getheaders():
+                if k.lower() not in ("connection", "transfer-encoding", "content-length"):
+                    self.send_header(k, v)
+            self.send_header("Content-Length", str(len(data)))
+            self.end_headers()
+            self.wfile.write(data)
+
+        do_GET = do_POST = forward
+
+        def log_message(self, *args):
+            pass
 
 
 class ClientTest(unittest.TestCase):
@@ -84,6 +124,20 @@ class ClientTest(unittest.TestCase):
         dead = Client("http://127.0.0.1:9", retries=2, backoff=0.01, timeout=2)
         with self.assertRaises(TransportError):
             dead.submit(decks.tiny())
+
+    def test_retry_after_a_lost_response_reuses_the_idempotency_key(self):
+        proxy = LosingProxy(self.d.port)
+        try:
+            client = Client(f"http://127.0.0.1:{proxy.server_address[1]}", retries=3, backoff=0.01,
+                            timeout=10)
+            job = client.submit(decks.tiny(), labels={"retry": "lost-response"})
+            self.assertEqual(len(proxy.dropped), 1, "the first answer was dropped")
+            self.assertEqual(job.id, proxy.dropped[0], "the retry got the job the first POST created")
+            same = list(self.client.list_jobs(labels={"retry": "lost-response"}))
+            self.assertEqual([j["id"] for j in same], [job.id], "one job, not two")
+        finally:
+            proxy.shutdown()
+            proxy.server_close()
 
     def test_sse_parser(self):
         frames = list(parse_sse(["id: 3\n", "event: step\n", "data: {}\n", "\n", ": ping\n", "\n",
