@@ -1,6 +1,7 @@
 #include "contact/adjust_nodes.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "contact/contact_surface.hpp"
 #include "contact/master_search.hpp"
@@ -9,9 +10,11 @@ namespace kontakt::contact {
 
 int adjust_slave_nodes(model::Model& model) {
   int moved = 0;
+  const model::ContactPair* first = nullptr;
   const VecX zero = VecX::Zero(3 * model.n_nodes());
   for (const auto& pair : model.contact_pairs) {
     if (!pair.adjust_distance && pair.adjust_set.empty()) continue;
+    if (!first) first = &pair;
     const ContactSurface slave = make_contact_surface(model, model.surfaces.at(pair.slave));
     const ContactSurface master = make_contact_surface(model, model.surfaces.at(pair.master));
     std::vector<FaceGeometry> faces;
@@ -46,6 +49,10 @@ int adjust_slave_nodes(model::Model& model) {
       ++moved;
     }
   }
+  if (moved > 0)
+    model.warnings.push_back(first->where.file + ":" + std::to_string(first->where.line) +
+                             ": *CONTACT PAIR: ADJUST moved " + std::to_string(moved) +
+                             " slave nodes onto the master surface");
   return moved;
 }
 

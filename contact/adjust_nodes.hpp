@@ -9,7 +9,8 @@
 namespace kontakt::contact {
 
 /// Moves the nodes every pair's ADJUST asks for in `model.mesh.coords`; returns how many
-/// nodes moved. Pairs without ADJUST are left alone.
+/// nodes moved, and says so in `model.warnings` at the first pair with ADJUST. Pairs without
+/// ADJUST are left alone. A model-setup step: run once, after reading, before any analysis.
 int adjust_slave_nodes(model::Model& model);
 
 }  // namespace kontakt::contact

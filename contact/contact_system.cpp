@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/contact_extrapolation.hpp"
 #include "contact/master_search.hpp"
 #include "contact/slave_points.hpp"
 #include "core/error.hpp"
@@ -77,6 +78,20 @@ nonlinear::ContactCriteria ContactSystem::criteria() const {
   for (const auto& p : pairs_)
     if (p.scheme.kind == Kind::NodeToSurface || !p.scheme.linear) return C::NodeToSurface;
   return C::SurfaceToSurface;
+}
+
+model::SolutionControls ContactSystem::solution_controls(
+    model::SolutionControls c, const model::ContactControls& contact) const {
+  if (criteria() != nonlinear::ContactCriteria::SurfaceToSurface) return c;
+  c.max_iterations = contact.itf2f;
+  c.slow_increment_iterations = std::numeric_limits<int>::max();
+  c.fast_increment_iterations += 12;
+  return c;
+}
+
+bool ContactSystem::wants_line_search(int iteration) const {
+  return criteria() == nonlinear::ContactCriteria::SurfaceToSurface && iteration > 1 &&
+         n_active_ > 0;
 }
 
 ContactSystem::UnitGeometry ContactSystem::geometry(const Unit& unit, const VecX& u) const {
@@ -153,7 +168,8 @@ void ContactSystem::build_points(Unit& unit, const VecX& u) const {
         pair.scheme.kind == Kind::Gauss ? gauss_points(face.element_type, face.topo)
                                         : gauss_cut_points(g.slave, g.masters, pair.scheme.points);
     for (const auto& s : seeds)
-      unit.points.push_back({.xi_s = s.xi, .ref_weight = s.ref_weight, .master = s.master});
+      unit.points.push_back({.xi_s = s.xi, .ref_weight = s.ref_weight,
+                             .pairing = {.master = s.master}});
   }
   // Initial overlaps are ramped out over the rest of step 1 (ccx: face-to-face re-ramps at
   // every increment, node-to-face over the first increment only). Face-to-face also closes
@@ -166,58 +182,63 @@ void ContactSystem::build_points(Unit& unit, const VecX& u) const {
   const Real theta = ctx_.fraction_start;
   for (Point& pt : unit.points) {
     pt.overlap0 = pt.closure = 0;
-    pair_point(unit, g, pt, u);
-    if (pt.master < 0) continue;
-    if (ramp && pt.gap < 0 && theta < 1) pt.overlap0 = pt.gap / (1 - theta);
-    if (close_gaps && pt.gap >= 0 && pt.gap < 1 / pair.behavior.stiffness) pt.closure = pt.gap;
+    pt.pairing = pair_point(unit, g, pt, u);
+    if (pt.pairing.master < 0) continue;
+    const Real gap = pt.pairing.gap;
+    if (ramp && gap < 0 && theta < 1) pt.overlap0 = gap / (1 - theta);
+    if (close_gaps && gap >= 0 && gap < 1 / pair.behavior.stiffness) pt.closure = gap;
     if (!pair.scheme.linear && (pt.overlap0 != 0 || pt.closure != 0))
-      pair_point(unit, g, pt, u);  // existence with the offsets applied
+      pt.pairing = pair_point(unit, g, pt, u);  // existence with the offsets applied
     if (pair.scheme.linear) freeze(unit, g, pt, u);
   }
 }
 
-void ContactSystem::pair_point(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const {
+ContactSystem::Pairing ContactSystem::pair_point(const Unit& unit, const UnitGeometry& g,
+                                                 const Point& pt, const VecX& u) const {
   const Vec3 xs = g.slave.x.transpose() * slave_weights(unit, pt);
   MasterFoot best;
-  // A Gauss-Cut point first tries the master face it was cut from.
-  if (pt.master >= 0 && pt.master < static_cast<int>(g.masters.size())) {
-    const FaceGeometry& m = g.masters[pt.master];
+  // A Gauss-Cut point first tries the master face it was cut from (or paired with before).
+  const int previous = pt.pairing.master;
+  if (previous >= 0 && previous < static_cast<int>(g.masters.size())) {
+    const FaceGeometry& m = g.masters[previous];
     const ClosestPoint f = project_onto_face(m, xs, face_centre(m.topo));
-    if (f.converged && inside_reference_face(m.topo, f.xi, kEdgeTolerance)) best = {pt.master, f};
+    if (f.converged && inside_reference_face(m.topo, f.xi, kEdgeTolerance)) best = {previous, f};
   }
   if (best.candidate < 0) {
     std::vector<const FaceGeometry*> c;
     for (const auto& m : g.masters) c.push_back(&m);
     best = find_master(xs, c);
   }
-  pt.master = best.candidate;
-  pt.exists = false;
-  if (best.candidate < 0) return;
-  pt.xi_m = best.foot.xi;
-  pt.gap = best.foot.gap;
+  Pairing p;
+  if (best.candidate < 0) return p;
+  p.master = best.candidate;
+  p.xi_m = best.foot.xi;
+  p.gap = best.foot.gap;
   const Pair& pair = pairs_[unit.pair];
   if (!pair.scheme.linear) {
     // Nonlinear variants: the contact element exists when the point is within the creation
     // clearance (c0 sqrt(A)), judged at pairing and kept until the next pairing, and so is
     // its area (as ccx regenerates its node-to-face elements).
-    pt.area = point_area(unit, pt, g, u);
-    pt.exists = is_active(pair.law, -(pt.gap + gap_offset(pt)),
-                          creation_clearance(pair.behavior, pt.area));
+    p.area = point_area(unit, pt, g, u);
+    p.exists = is_active(pair.law, -(p.gap + gap_offset(pt)),
+                         creation_clearance(pair.behavior, p.area));
   }
+  return p;
 }
 
 void ContactSystem::freeze(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const {
-  const FaceGeometry& m = g.masters[pt.master];
+  const FaceGeometry& m = g.masters[pt.pairing.master];
   FaceShape s;
-  face_shape(m.topo, pt.xi_m, s);
+  face_shape(m.topo, pt.pairing.xi_m, s);
   pt.frozen.master_weights = s.N;
-  pt.frozen.normal = surface_point(m, pt.xi_m).normal;
+  pt.frozen.normal = surface_point(m, pt.pairing.xi_m).normal;
   pt.frozen.slave_weights = slave_weights(unit, pt);
   pt.frozen.area = point_area(unit, pt, g, u);
 }
 
 void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, int threads) {
   ctx_ = ctx;
+  evaluations_ = 0;
   // Broad phase: one tree over each pair's master faces; candidates within one face size.
   std::vector<AabbTree> trees;
   std::vector<Real> margins;
@@ -239,14 +260,18 @@ void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, 
       build_points(units_[k], u);
     }
   });
-  // Groups: the linear variants need one per master face a point is frozen to; the others
-  // one per candidate, since their points may move to any candidate during the increment.
+  build_groups();
+}
+
+void ContactSystem::build_groups() {
+  // The linear variants need one group per master face a point is frozen to; the others one
+  // per candidate, since their points may move to any candidate during the increment.
   group_nodes_.clear();
   for (Unit& unit : units_) {
     const Pair& pair = pairs_[unit.pair];
     std::vector<char> used(unit.candidates.size(), !pair.scheme.linear);
     for (const Point& pt : unit.points)
-      if (pt.master >= 0) used[pt.master] = 1;
+      if (pt.pairing.master >= 0) used[pt.pairing.master] = 1;
     unit.groups.assign(unit.candidates.size(), -1);
     const std::vector<int> slave_nodes =
         unit.node >= 0 ? std::vector<int>{unit.node} : pair.slave.faces[unit.face].nodes;
@@ -267,83 +292,139 @@ void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, 
   }
 }
 
-std::pair<Real, Index> ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool repair) {
+ForceMeasure ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool repair) {
   const Pair& pair = pairs_[unit.pair];
   for (int gi : unit.groups) {
     if (gi < 0) continue;
     contributions_[gi].K.setZero();
     contributions_[gi].f_int.setZero();
   }
-  std::pair<Real, Index> force{0, 0};
+  ForceMeasure force;
   if (unit.points.empty()) return force;
   const UnitGeometry g = geometry(unit, u);
   const PressureLaw& law = pair.law;
   PointResponse r;
   for (Point& pt : unit.points) {
-    pt.active = false;
-    pt.pressure = pt.energy = 0;
-    if (repair) pair_point(unit, g, pt, u);
-    if (pt.master < 0) continue;
+    PointState& s = pt.trial;
+    s = {};
+    if (repair) pt.pairing = pair_point(unit, g, pt, u);
+    Pairing& p = pt.pairing;
+    if (p.master < 0) continue;
     if (pair.scheme.linear) {
       pt.frozen.gap_offset = gap_offset(pt);
-      frozen_point_response(g.slave.x, g.masters[pt.master].x, pt.frozen, law, 0, r);
-      pt.area = pt.frozen.area;
+      frozen_point_response(g.slave.x, g.masters[p.master].x, pt.frozen, law, 0, r);
+      s.area = pt.frozen.area;
     } else {
-      if (!pt.exists) continue;
-      Vec2 xi = pt.xi_m;
-      if (!sliding_point_response(g.slave.x, slave_weights(unit, pt), g.masters[pt.master], xi,
-                                  pt.area, gap_offset(pt), law, kNoClearanceLimit, r))
+      if (!p.exists) continue;
+      Vec2 xi = p.xi_m;
+      if (!sliding_point_response(g.slave.x, slave_weights(unit, pt), g.masters[p.master], xi,
+                                  p.area, gap_offset(pt), law, kNoClearanceLimit, r))
         continue;
       // Frozen pairing may let the foot slide off its face; far off, the face no longer
       // represents the surface under the point.
-      if (!inside_reference_face(g.masters[pt.master].topo, xi, 0.5)) continue;
-      pt.xi_m = xi;
+      if (!inside_reference_face(g.masters[p.master].topo, xi, 0.5)) continue;
+      p.xi_m = xi;
+      s.area = p.area;
     }
-    pt.gap = r.gap;
+    s.gap = r.gap;
     if (!r.active) continue;
-    pt.active = true;
-    pt.pressure = r.pressure.pressure;
-    pt.energy = r.pressure.energy * pt.area;
-    GroupContribution& c = contributions_[unit.groups[pt.master]];
+    s.active = true;
+    s.pressure = r.pressure.pressure;
+    s.energy = r.pressure.energy * s.area;
+    GroupContribution& c = contributions_[unit.groups[p.master]];
     c.K += r.K;
     c.f_int += r.f_int;
-    force.first += r.f_int.cwiseAbs().sum();
-    force.second += r.f_int.size();
+    force.abs_sum += r.f_int.cwiseAbs().sum();
+    force.components += r.f_int.size();
   }
   return force;
 }
 
-void ContactSystem::evaluate(const VecX& u, int evaluation, int threads) {
+void ContactSystem::update(const VecX& u, int threads) {
+  ++evaluations_;
   std::vector<int> active(units_.size(), 0);
-  std::vector<std::pair<Real, Index>> force(units_.size());
+  std::vector<ForceMeasure> force(units_.size());
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       Unit& unit = units_[k];
       const Pair& pair = pairs_[unit.pair];
-      const bool repair = !pair.scheme.linear && !pair.def->small_sliding && evaluation > 1 &&
-                          evaluation <= kRepairEvaluations;
+      const bool repair = !pair.scheme.linear && !pair.def->small_sliding && evaluations_ > 1 &&
+                          evaluations_ <= kRepairEvaluations;
       force[k] = evaluate_unit(unit, u, repair);
-      for (const Point& pt : unit.points) active[k] += pt.active;
+      for (const Point& pt : unit.points) active[k] += pt.trial.active;
     }
   });
   n_active_ = 0;
-  force_abs_sum_ = 0;
-  force_components_ = 0;
+  force_ = {};
   for (std::size_t k = 0; k < units_.size(); ++k) {
     n_active_ += active[k];
-    force_abs_sum_ += force[k].first;
-    force_components_ += force[k].second;
+    force_.abs_sum += force[k].abs_sum;
+    force_.components += force[k].components;
   }
   for (const auto& c : contributions_)
     if (!c.f_int.allFinite() || !c.K.allFinite())
       throw SolverError("contact: non-finite contact force or stiffness");
 }
 
+ForceMeasure ContactSystem::add_to(const assembly::AssemblyPlan& plan, const VecX& prescribed_step,
+                                   assembly::ReducedSystem& system, VecX& internal_force) const {
+  // Contact groups act like elements: scattered with the same dof reduction, part of the
+  // reaction forces and of the average force.
+  std::vector<const MatX*> K(contributions_.size());
+  std::vector<const VecX*> f(contributions_.size());
+  std::vector<VecX> minus_f(contributions_.size());
+  for (std::size_t g = 0; g < contributions_.size(); ++g) {
+    const GroupContribution& c = contributions_[g];
+    minus_f[g] = -c.f_int;
+    K[g] = &c.K;
+    f[g] = &minus_f[g];
+    const auto& nodes = group_nodes_[g];
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      internal_force.segment<3>(3 * nodes[a]) += c.f_int.segment<3>(3 * a);
+  }
+  assembly::scatter_groups(plan, prescribed_step, K, f, system);
+  return force_;
+}
+
+namespace {
+
+/// A linear variant whose frozen gaps differ from fresh projections by more than this
+/// fraction of the largest overclosure redoes the increment smaller.
+constexpr Real kDriftTolerance = 0.1;
+
+/// How much smaller: the drift grows about with the square of the increment (the frozen normal
+/// is off by the sliding, and so is the gap along it: measured 0.37 -> 0.11 for a halved
+/// increment on the Hertz model), so one redo aims at 80 % of the tolerance.
+Real drift_redo_factor(Real drift) {
+  return std::clamp(std::sqrt(0.8 * kDriftTolerance / drift), 0.25, 0.75);
+}
+
+}  // namespace
+
+Acceptance ContactSystem::accept(const VecX& u) const {
+  if (criteria() != nonlinear::ContactCriteria::SurfaceToSurface) return {};
+  const Real drift = frozen_drift(u);
+  if (drift <= kDriftTolerance) return {};
+  return {.accepted = false, .redo_factor = drift_redo_factor(drift),
+          .reason = "frozen contact geometry drifted: gaps off by " + std::to_string(drift) +
+                    " of the largest overclosure"};
+}
+
+void ContactSystem::commit() {
+  for (Unit& unit : units_)
+    for (Point& pt : unit.points) pt.committed = pt.trial;
+}
+
+void ContactSystem::roll_back() {
+  for (Unit& unit : units_)
+    for (Point& pt : unit.points) pt.trial = pt.committed;
+}
+
 Real ContactSystem::total_normal_force() const {
   Real total = 0;
   for (const Unit& unit : units_)
     for (const Point& pt : unit.points)
-      if (pt.active) total += pt.pressure * pt.area;
+      if (pt.committed.active) total += pt.committed.pressure * pt.committed.area;
   return total;
 }
 
@@ -351,7 +432,7 @@ Real ContactSystem::max_pressure() const {
   Real p = 0;
   for (const Unit& unit : units_)
     for (const Point& pt : unit.points)
-      if (pt.active) p = std::max(p, pt.pressure);
+      if (pt.committed.active) p = std::max(p, pt.committed.pressure);
   return p;
 }
 
@@ -360,46 +441,26 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
   for (const Unit& unit : units_) {
     if (!pairs_[unit.pair].scheme.linear) continue;
     bool any = false;
-    for (const Point& pt : unit.points) any |= pt.active;
+    for (const Point& pt : unit.points) any |= pt.trial.active;
     if (!any) continue;
     const UnitGeometry g = geometry(unit, u);
     std::vector<const FaceGeometry*> c;
     for (const auto& m : g.masters) c.push_back(&m);
     for (const Point& pt : unit.points) {
-      if (!pt.active) continue;
-      overclosure = std::max(overclosure, -pt.gap);
+      if (!pt.trial.active) continue;
+      overclosure = std::max(overclosure, -pt.trial.gap);
       const MasterFoot fresh = find_master(g.slave.x.transpose() * pt.frozen.slave_weights, c);
       if (fresh.candidate < 0) continue;  // slid beyond the master surface's edge
-      drift = std::max(drift, std::abs(pt.gap - (fresh.foot.gap + gap_offset(pt))));
+      drift = std::max(drift, std::abs(pt.trial.gap - (fresh.foot.gap + gap_offset(pt))));
     }
   }
   return overclosure > 0 ? drift / overclosure : 0;
 }
 
-std::vector<bool> ContactSystem::nodes_outside_master(const VecX& u) const {
+void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {
   std::vector<char> on_slave(model_.n_nodes(), 0), inside(model_.n_nodes(), 0);
-  for (const Unit& unit : units_) {
-    if (unit.node >= 0) {
-      on_slave[unit.node] = 1;
-      inside[unit.node] |= !unit.points.empty() && unit.points.front().master >= 0;
-      continue;
-    }
-    const UnitGeometry g = geometry(unit, u);
-    std::vector<const FaceGeometry*> c;
-    for (const auto& m : g.masters) c.push_back(&m);
-    const auto& nodes = pairs_[unit.pair].slave.faces[unit.face].nodes;
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      on_slave[nodes[i]] = 1;
-      if (!inside[nodes[i]]) inside[nodes[i]] = find_master(g.slave.x.row(i).transpose(), c).candidate >= 0;
-    }
-  }
-  std::vector<bool> outside(model_.n_nodes(), false);
-  for (int n = 0; n < model_.n_nodes(); ++n) outside[n] = on_slave[n] && !inside[n];
-  return outside;
-}
-
-std::vector<output::ContactPointRecord> ContactSystem::records(const VecX& u) const {
-  std::vector<output::ContactPointRecord> out;
+  frame.contact_points.clear();
+  frame.n_active_contact = 0;
   for (const Unit& unit : units_) {
     const Pair& pair = pairs_[unit.pair];
     const UnitGeometry g = geometry(unit, u);
@@ -414,15 +475,31 @@ std::vector<output::ContactPointRecord> ContactSystem::records(const VecX& u) co
       }
       r.xi = pt.xi_s;
       r.x = g.slave.x.transpose() * slave_weights(unit, pt);
-      r.active = pt.active;
-      r.clearance = pt.gap;
-      r.pressure = pt.pressure;
-      r.area = pt.area;
-      r.energy = pt.energy;
-      out.push_back(r);
+      r.active = pt.committed.active;
+      r.clearance = pt.committed.gap;
+      r.pressure = pt.committed.pressure;
+      r.area = pt.committed.area;
+      r.energy = pt.committed.energy;
+      frame.contact_points.push_back(r);
+      frame.n_active_contact += pt.committed.active;
+    }
+    // Slave nodes that project onto no master face get no extrapolated values (thesis §4.3.2).
+    if (unit.node >= 0) {
+      on_slave[unit.node] = 1;
+      inside[unit.node] |= !unit.points.empty() && unit.points.front().pairing.master >= 0;
+      continue;
+    }
+    std::vector<const FaceGeometry*> c;
+    for (const auto& m : g.masters) c.push_back(&m);
+    const auto& nodes = pair.slave.faces[unit.face].nodes;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      on_slave[nodes[i]] = 1;
+      if (!inside[nodes[i]]) inside[nodes[i]] = find_master(g.slave.x.row(i).transpose(), c).candidate >= 0;
     }
   }
-  return out;
+  std::vector<bool> outside(model_.n_nodes(), false);
+  for (int n = 0; n < model_.n_nodes(); ++n) outside[n] = on_slave[n] && !inside[n];
+  frame.contact_nodal = contact_nodal_values(model_, frame.contact_points, outside);
 }
 
 }  // namespace kontakt::contact

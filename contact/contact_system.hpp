@@ -1,20 +1,26 @@
-// The contact pairs of a model as one "extra constraint" of the Newton driver. Lifecycle per
-// increment (thesis chapter 4, ccx-behaviour.md sections 1-2):
+// The contact pairs of a model as one constraint of the Newton driver, which calls nothing but
+// this lifecycle (thesis chapter 4, ccx-behaviour.md sections 1-3; FEBio's
+// FESurfacePairConstraint is the model):
 //   begin_increment(u)  broad phase (AABB tree over the master faces), integration points of
 //                       every slave face (Gauss / Gauss-Cut) or the slave nodes (node-to-surface),
 //                       pairing with master faces; the linear variants freeze projection, normal
 //                       and area here. Fixes the contact groups (slave nodes + one master face)
 //                       that the sparsity pattern takes for the whole increment.
-//   evaluate(u, it)     active set (linear variants: every iteration; others: re-pairing in the
-//                       first 8 evaluations unless SMALL SLIDING, then frozen), force and tangent
-//                       of every group.
-//   records(u)          per-point output of a converged state.
-// Cutbacks need no rollback: the next begin_increment rebuilds everything from the converged
-// displacements; the only state carried between increments is the initial-overlap ramp.
+//   update(u)           active set (linear variants: every evaluation; others: re-pairing in the
+//                       first 8 evaluations of the increment unless SMALL SLIDING, then frozen),
+//                       the trial state, force and tangent of every point.
+//   add_to(system)      the groups' forces and tangents scattered into the reduced system.
+//   accept(u)           the verdict on a converged increment: redo it smaller when the frozen
+//                       geometry of a linear variant drifted (thesis section 7.1).
+//   commit()            the trial point states become the committed ones (the output reads them).
+//   roll_back()         the trial states are dropped (cutback).
+// The driver also asks which convergence rules, solution controls and line search apply.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include "assembly/assembler.hpp"
 #include "contact/aabb_tree.hpp"
 #include "contact/contact_surface.hpp"
 #include "contact/point_kernel.hpp"
@@ -37,62 +43,106 @@ struct GroupContribution {
   VecX f_int;
 };
 
+/// The sum of |force component| over the active points and the number of those components:
+/// contact's share of ccx's average force q_bar (contact springs count as elements there).
+struct ForceMeasure {
+  Real abs_sum = 0;
+  Index components = 0;
+};
+
+/// Whether a converged increment stands, or is redone smaller by `redo_factor`.
+struct Acceptance {
+  bool accepted = true;
+  Real redo_factor = 1;
+  std::string reason;           ///< why it is redone, with the numbers
+};
+
+/// What one point reports: its state after an evaluation (trial) or at the last converged
+/// increment (committed).
+struct PointState {
+  bool active = false;
+  Real gap = 0;                 ///< effective gap (negative: penetration)
+  Real pressure = 0;
+  Real area = 0;
+  Real energy = 0;              ///< spring energy, pressure energy times area
+};
+
 class ContactSystem {
  public:
   /// Builds the surfaces of every pair (each with the scheme its ContactPair names).
   explicit ContactSystem(const model::Model& model);
 
   bool empty() const { return pairs_.empty(); }
+
+  // --- What the driver asks once per step -------------------------------------------------
   /// How the driver judges convergence with these pairs (ccx-behaviour.md section 3.5): ccx's
   /// face-to-face rules for the linear variants, node-to-face rules when any pair is nts or a
   /// nonlinear variant, None without pairs.
   nonlinear::ContactCriteria criteria() const;
+  /// The step's controls with ccx's face-to-face changes under the face-to-face rules: the
+  /// iteration cap is itf2f, the next increment is never shrunk for slow convergence (thesis
+  /// 4.4.2) and grows after increments of up to I_G + 12 iterations.
+  model::SolutionControls solution_controls(model::SolutionControls step_controls,
+                                            const model::ContactControls& contact) const;
+  /// ccx's line search: face-to-face rules, from iteration 2, while some point is active.
+  bool wants_line_search(int iteration) const;
 
+  // --- Lifecycle --------------------------------------------------------------------------
   void begin_increment(const VecX& u, const IncrementContext& ctx, int threads);
   /// Node lists of the contact groups of this increment (slave nodes first, then the master
   /// face's nodes); the same while begin_increment found the same candidates.
   const std::vector<std::vector<int>>& groups() const { return group_nodes_; }
 
-  /// Evaluates every point at displacements `u`; `evaluation` counts the evaluations of this
-  /// increment from 1 (it decides re-pairing). Fills contributions(). Throws SolverError on
-  /// non-finite values.
-  void evaluate(const VecX& u, int evaluation, int threads);
+  /// Evaluates every point at displacements `u` into the trial states and the group forces
+  /// and tangents. Throws SolverError on non-finite values.
+  void update(const VecX& u, int threads);
+  /// Scatters the groups of the last update into `system` (tangent, and -f into the
+  /// right-hand side, prescribed values moved by `prescribed_step` as for elements) and adds
+  /// their forces to `internal_force` (full dof vector). Returns the force measure.
+  ForceMeasure add_to(const assembly::AssemblyPlan& plan, const VecX& prescribed_step,
+                      assembly::ReducedSystem& system, VecX& internal_force) const;
+  /// Each group's force and tangent after the last update() (what add_to scatters).
   const std::vector<GroupContribution>& contributions() const { return contributions_; }
-  /// Contact elements (points or nodes carrying force) after the last evaluate().
+  /// Contact elements (points or nodes carrying force) after the last update().
   int n_active() const { return n_active_; }
-  /// Sum of |force component| over the active points and the number of those components:
-  /// their share of ccx's average force q_bar (contact springs included).
-  Real force_abs_sum() const { return force_abs_sum_; }
-  Index force_components() const { return force_components_; }
-  /// Total normal contact force (sum of pressure * area) and the largest pressure.
+
+  /// The verdict on an increment converged at `u` (thesis section 7.1: frozen projections
+  /// that no longer lie under their points give wrong gaps).
+  Acceptance accept(const VecX& u) const;
+  void commit();
+  void roll_back();
+
+  // --- Output of the committed state --------------------------------------------------------
+  /// The contact points, the nodal contact values and the active count of the committed
+  /// state at the converged displacements `u`.
+  void write_output(const VecX& u, output::Frame& frame) const;
+  /// Total normal force (sum of pressure * area) and the largest pressure, committed state.
   Real total_normal_force() const;
   Real max_pressure() const;
 
   /// Largest difference between a frozen gap and the gap of a fresh projection, over the
   /// active points of the linear variants, relative to their largest overclosure (0 when
-  /// nothing is active). Thesis section 7.1: a large value means the frozen geometry drifted.
+  /// nothing is active).
   Real frozen_drift(const VecX& u) const;
 
-  /// Per model node: a slave node that projects onto no master face (thesis §4.3.2: such
-  /// nodes get no extrapolated contact values).
-  std::vector<bool> nodes_outside_master(const VecX& u) const;
-
-  /// One record per integration point / slave node at the last evaluated state.
-  std::vector<output::ContactPointRecord> records(const VecX& u) const;
-
  private:
+  /// Where a point is paired: fixed at begin_increment, except for the re-pairing of the
+  /// nonlinear variants within their first evaluations.
+  struct Pairing {
+    int master = -1;            ///< index into the unit's candidates; -1: no master under it
+    Vec2 xi_m = Vec2::Zero();
+    Real gap = 0;               ///< geometric gap at pairing
+    bool exists = false;        ///< nonlinear variants: contact element created at pairing
+    Real area = 0;              ///< nonlinear variants: area at pairing
+  };
   struct Point {
     Vec2 xi_s = Vec2::Zero();
     Real ref_weight = 0;        ///< area = ref_weight * |J_slave(xi_s)|; NTS: the nodal area
-    int master = -1;            ///< index into the unit's candidates; -1: no master under it
-    Vec2 xi_m = Vec2::Zero();
-    bool exists = false;        ///< nonlinear variants: contact element created at pairing
+    Pairing pairing{};
     FrozenPoint frozen{};       ///< linear variants
     Real overlap0 = 0;          ///< initial overlap being ramped out (<= 0)
     Real closure = 0;           ///< tiny initial gap counted as closed (>= 0)
-    // last evaluation
-    Real gap = 0, pressure = 0, area = 0, energy = 0;
-    bool active = false;
+    PointState trial{}, committed{};
   };
   /// A slave face (surface-to-surface) or slave node (node-to-surface) with its candidates.
   struct Unit {
@@ -131,10 +181,13 @@ class ContactSystem {
   void find_candidates(Unit& unit, const VecX& u, const std::vector<AabbTree>& trees,
                        const std::vector<Real>& margins) const;
   void build_points(Unit& unit, const VecX& u) const;
-  void pair_point(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const;
+  Pairing pair_point(const Unit& unit, const UnitGeometry& g, const Point& pt,
+                     const VecX& u) const;
   void freeze(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const;
-  /// Evaluates one unit; returns (sum |f|, components) of its active points.
-  std::pair<Real, Index> evaluate_unit(Unit& unit, const VecX& u, bool repair);
+  void build_groups();
+  /// Evaluates one unit into its points' trial states and its groups; returns the force
+  /// measure of its active points.
+  ForceMeasure evaluate_unit(Unit& unit, const VecX& u, bool repair);
 
   const model::Model& model_;
   std::vector<Pair> pairs_;
@@ -142,9 +195,9 @@ class ContactSystem {
   std::vector<std::vector<int>> group_nodes_;
   std::vector<GroupContribution> contributions_;
   IncrementContext ctx_;
+  int evaluations_ = 0;         ///< update() calls in this increment (they decide re-pairing)
   int n_active_ = 0;
-  Real force_abs_sum_ = 0;
-  Index force_components_ = 0;
+  ForceMeasure force_;
 };
 
 }  // namespace kontakt::contact

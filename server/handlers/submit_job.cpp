@@ -100,9 +100,8 @@ std::optional<HttpResponse> read_submission(const HttpRequest& request, Submissi
   if (s.name && (s.name->empty() || s.name->size() > kMaxNameLength || has_control_chars(*s.name)))
     return invalid_parameter("name", "1 to 200 printable characters");
   if (s.scheme && !model::contact_scheme_from_name(*s.scheme))
-    return invalid_parameter("scheme", "unknown contact scheme '" + *s.scheme +
-                                           "' (nts, gauss, lgauss, gc1|gc3|gc7|gc12, "
-                                           "lgc1|lgc3|lgc7|lgc12)");
+    return invalid_parameter("scheme", "unknown contact scheme '" + *s.scheme + "' (" +
+                                           model::contact_scheme_names() + ")");
   if (s.labels.size() > kMaxLabels) return invalid_parameter("labels", "at most 32 labels");
   for (const auto& [k, v] : s.labels) {
     if (!is_label_key(k)) return invalid_parameter("labels", "key '" + k + "': 1 to 64 of A-Z a-z 0-9 _ - .");

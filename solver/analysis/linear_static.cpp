@@ -18,17 +18,13 @@
 #include "element/solid_linear.hpp"
 #include "linsolve/linear_solver.hpp"
 #include "linsolve/spd_solve.hpp"
+#include "material/von_mises.hpp"
 
 namespace kontakt::analysis {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-Real von_mises(const Eigen::Ref<const Eigen::Matrix<Real, 1, 6>>& s) {
-  const Real a = s[0] - s[1], b = s[1] - s[2], c = s[2] - s[0];
-  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
-}
 
 /// Rejects what a linear analysis cannot represent, naming the step.
 void require_linear(const model::Model& model) {
@@ -145,7 +141,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     frame.total_time = total_time;
     frame.is_step_end = true;
     for (Index n = 0; n < frame.U.rows(); ++n) max_u = std::max(max_u, frame.U.row(n).norm());
-    for (Index k = 0; k < frame.S.rows(); ++k) max_mises = std::max(max_mises, von_mises(frame.S.row(k)));
+    for (Index k = 0; k < frame.S.rows(); ++k) max_mises = std::max(max_mises, material::von_mises(frame.S.row(k).transpose()));
     events.on_event({.kind = Event::Kind::Increment, .step = step_no, .increment = 1,
                      .attempt = 1, .iteration = 1, .step_time = period,
                      .total_time = total_time, .dt = period, .wall_time = wall()});

@@ -9,7 +9,7 @@
 
 #include "analysis/events.hpp"
 #include "analysis/linear_static.hpp"
-#include "nonlinear/solution_controls.hpp"
+#include "model/solution_controls.hpp"
 
 namespace kontakt::analysis {
 
@@ -17,7 +17,7 @@ struct NonlinearOptions {
   int threads = 0;                                ///< 0 = all cores
   const std::atomic<bool>* cancel = nullptr;      ///< polled once per iteration
   /// Overrides every step's *CONTROLS when set (tests, expert use).
-  std::optional<nonlinear::SolutionControls> controls;
+  std::optional<model::SolutionControls> controls;
 };
 
 /// Solves every step. Throws NonConvergence when an increment cannot be completed (after the

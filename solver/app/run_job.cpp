@@ -5,6 +5,7 @@
 #include "analysis/nonlinear_static.hpp"
 #include "app/monitor_files.hpp"
 #include "app/result_writers.hpp"
+#include "contact/adjust_nodes.hpp"
 #include "contact/unsolved_interactions.hpp"
 #include "core/error.hpp"
 #include "inp/read_deck.hpp"
@@ -22,16 +23,18 @@ DeckError deck_error_of(const InputError& e) {
           .message = e.what()};
 }
 
-/// The deck's model with the scheme override applied to every contact pair.
+/// The deck's model, set up for the analysis: the scheme override applied to every contact
+/// pair, and the slave nodes ADJUST asks for moved onto their master surfaces.
 model::Model read_model(const fs::path& deck, const std::optional<std::string>& scheme) {
   model::Model model = inp::read_deck(deck);
   contact::reject_unsolved_interactions(model);
+  contact::adjust_slave_nodes(model);
   if (!scheme) return model;
   const auto parsed = model::contact_scheme_from_name(*scheme);
   if (!parsed)
     throw InputError({deck.string(), 0}, "scheme",
-                     "unknown contact scheme '" + *scheme +
-                         "' (nts, gauss, lgauss, gc1|gc3|gc7|gc12, lgc1|lgc3|lgc7|lgc12)");
+                     "unknown contact scheme '" + *scheme + "' (" +
+                         model::contact_scheme_names() + ")");
   for (auto& pair : model.contact_pairs) pair.scheme = *parsed;
   return model;
 }

@@ -59,8 +59,8 @@ bool parse_solve_args(int argc, char** argv, SolveArgs& args) {
       const char* v = value("--scheme");
       if (!v) return false;
       if (!model::contact_scheme_from_name(v)) {
-        std::fprintf(stderr, "kontakt: unknown contact scheme '%s' (nts, gauss, lgauss, gc1, gc3, "
-                             "gc7, gc12, lgc1, lgc3, lgc7, lgc12)\n", v);
+        std::fprintf(stderr, "kontakt: unknown contact scheme '%s' (%s)\n", v,
+                     model::contact_scheme_names().c_str());
         return false;
       }
       args.scheme = v;

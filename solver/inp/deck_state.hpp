@@ -13,7 +13,7 @@
 
 #include "inp/inp_lexer.hpp"
 #include "model/model.hpp"
-#include "nonlinear/solution_controls.hpp"
+#include "model/solution_controls.hpp"
 
 namespace kontakt::inp {
 
@@ -79,7 +79,7 @@ struct ActiveLoads {
   std::vector<model::ContactRequest> contact_files;
   int output_frequency = 1;  ///< ccx: the last FREQUENCY= given applies to all outputs
   bool nlgeom = false;       ///< ccx: NLGEOM stays active in later steps
-  nonlinear::SolutionControls controls;  ///< *CONTROLS stay in force until RESET
+  model::SolutionControls controls;  ///< *CONTROLS stay in force until RESET
   model::ContactControls contact_controls;  ///< likewise
   /// *CHANGE FRICTION: interaction index -> the friction that replaces the model's one.
   std::map<int, model::Friction> friction_changes;

@@ -117,9 +117,8 @@ void read_scheme(const Record& record, model::ContactPair& pair) {
   if (name) {
     const auto scheme = model::contact_scheme_from_name(*name);
     if (!scheme)
-      fail(record, "SCHEME=" + *name +
-                       " is not a contact scheme (nts, gauss, lgauss, gc1, gc3, gc7, gc12, lgc1, "
-                       "lgc3, lgc7, lgc12)");
+      fail(record, "SCHEME=" + *name + " is not a contact scheme (" +
+                       model::contact_scheme_names() + ")");
     pair.scheme = *scheme;
     pair.scheme_given = true;
     return;

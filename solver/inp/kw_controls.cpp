@@ -25,7 +25,7 @@ void set_if_given(const Record& record, const DataLine& line, std::size_t index,
   }
 }
 
-void read_time_incrementation(const Record& record, nonlinear::SolutionControls& c) {
+void read_time_incrementation(const Record& record, model::SolutionControls& c) {
   require_line_count(record, 1, 2);
   const DataLine& ints = record.lines[0];
   require_field_count(record, ints, 1, 8);
@@ -53,7 +53,7 @@ const DataLine& single_data_line(const Record& record, std::size_t max_fields) {
   return line;
 }
 
-void read_field(const Record& record, nonlinear::SolutionControls& c) {
+void read_field(const Record& record, model::SolutionControls& c) {
   const DataLine& line = single_data_line(record, 8);
   // R_n C_n q_0 q_u R_p epsilon C_epsilon R_l
   Real* targets[] = {&c.residual_tolerance, &c.correction_tolerance, &c.initial_force_average,
@@ -89,10 +89,10 @@ void read_contact(const Record& record, model::ContactControls& c) {
 
 void handle_controls(const Record& record, DeckState& state) {
   check_params(record, {"PARAMETERS", "RESET", "FIELD"});
-  nonlinear::SolutionControls& c = state.active.controls;
+  model::SolutionControls& c = state.active.controls;
   model::ContactControls& contact = state.active.contact_controls;
   if (has_param(record, "RESET")) {
-    c = nonlinear::SolutionControls{};
+    c = model::SolutionControls{};
     contact = model::ContactControls{};
   } else {
     const std::optional<std::string> which = name_value(record, "PARAMETERS");

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "contact/adjust_nodes.hpp"
 #include "inp/contact_builder.hpp"
 #include "inp/element_names.hpp"
 #include "inp/record_access.hpp"
@@ -235,15 +234,6 @@ model::Model finish_model(DeckState& state) {
   assign_sections(state);
   require_sections(state);
   resolve_contact(state);
-  // ADJUST belongs to the deck's geometry: the model starts with the slave nodes moved.
-  if (const int moved = contact::adjust_slave_nodes(model); moved > 0) {
-    for (const auto& pair : model.contact_pairs)
-      if (pair.adjust_distance || !pair.adjust_set.empty()) {
-        state.warn(pair.where, "*CONTACT PAIR",
-                   "ADJUST moved " + std::to_string(moved) + " slave nodes onto the master surface");
-        break;
-      }
-  }
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());
     for (const auto& [node, value] : state.initial_temperatures) {

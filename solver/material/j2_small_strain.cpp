@@ -45,8 +45,6 @@ Mat6 isotropic_elastic_stiffness(Real young, Real poisson) {
   return c;
 }
 
-Real von_mises(const Vec6& stress) { return std::sqrt(1.5) * tensor_norm(deviator(stress)); }
-
 J2Result j2_return_map(Real young, Real poisson, const HardeningTable& table,
                        const J2State& committed, const Vec6& strain, Real thermal_strain) {
   check_elastic_constants(young, poisson);

@@ -12,6 +12,7 @@
 
 #include "core/types.hpp"
 #include "material/hardening_table.hpp"
+#include "material/von_mises.hpp"
 
 namespace kontakt::material {
 
@@ -34,9 +35,6 @@ void check_elastic_constants(Real young, Real poisson);
 
 /// Isotropic linear-elastic stiffness (engineering shear strain -> stress).
 Mat6 isotropic_elastic_stiffness(Real young, Real poisson);
-
-/// Von Mises equivalent of a stress vector (xx, yy, zz, xy, xz, yz).
-Real von_mises(const Vec6& stress);
 
 /// Radial return from the committed state for the total strain `strain` (engineering
 /// shear). `thermal_strain` is an isotropic thermal strain alpha_T*(T - T0) removed

@@ -60,6 +60,8 @@ struct ContactScheme {
 std::optional<ContactScheme> contact_scheme_from_name(const std::string& name);
 /// The canonical (lower-case) name.
 std::string contact_scheme_name(const ContactScheme& scheme);
+/// Every scheme name, comma-separated, for messages that list the choices.
+std::string contact_scheme_names();
 
 struct ContactPair {
   enum class Type { NodeToSurface, SurfaceToSurface };

@@ -28,4 +28,12 @@ std::string contact_scheme_name(const ContactScheme& scheme) {
   return "?";
 }
 
+std::string contact_scheme_names() {
+  std::string names;
+  for (const char* n : {"nts", "gauss", "lgauss", "gc1", "gc3", "gc7", "gc12", "lgc1", "lgc3",
+                        "lgc7", "lgc12"})
+    names += (names.empty() ? "" : ", ") + std::string(n);
+  return names;
+}
+
 }  // namespace kontakt::model

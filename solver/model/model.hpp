@@ -13,7 +13,7 @@
 #include "core/types.hpp"
 #include "element/element_type.hpp"
 #include "model/contact.hpp"
-#include "nonlinear/solution_controls.hpp"
+#include "model/solution_controls.hpp"
 
 namespace kontakt::model {
 
@@ -154,7 +154,7 @@ struct Step {
   bool nlgeom = false;
   int max_increments = 100;       ///< *STEP, INC=
   StaticProcedure procedure;
-  nonlinear::SolutionControls controls;  ///< *CONTROLS in force for this step
+  model::SolutionControls controls;  ///< *CONTROLS in force for this step
   std::vector<Boundary> boundaries;
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> pressures;

@@ -13,7 +13,7 @@ constexpr Real kResidualFloor = 1e-6;
 constexpr Real kBlowUp = 1e20;
 }  // namespace
 
-Convergence::Convergence(const SolutionControls& controls, Real previous_force_average)
+Convergence::Convergence(const model::SolutionControls& controls, Real previous_force_average)
     : c_(controls) {
   if (c_.fixed_force_average > 0)
     q_tilde_ = c_.fixed_force_average;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "nonlinear/solution_controls.hpp"
+#include "model/solution_controls.hpp"
 
 namespace kontakt::nonlinear {
 
@@ -47,7 +47,7 @@ struct Verdict {
 class Convergence {
  public:
   /// `previous_force_average` is the last q_bar of the previous step (0 if none).
-  Convergence(const SolutionControls& controls, Real previous_force_average);
+  Convergence(const model::SolutionControls& controls, Real previous_force_average);
 
   /// Contact rules and the 1 per mille tolerance (delcon) for surface-to-surface contact.
   void set_contact_criteria(ContactCriteria criteria, Real delcon);
@@ -67,7 +67,7 @@ class Convergence {
   bool contact_changed(int before, int after) const;
   bool surface_divergence(int iteration, Real r, Real c1q) const;
 
-  SolutionControls c_;
+  model::SolutionControls c_;
   Real q_tilde_ = 0;       ///< q~ after the last converged increment
   int n_averaged_ = 0;     ///< j: converged increments that entered q~
   Real q_tilde_trial_ = 0;  ///< q~ including the current iteration's q_bar

@@ -12,7 +12,7 @@ namespace {
 constexpr Real kTimeTolerance = 1e-12;
 }  // namespace
 
-IncrementControl::IncrementControl(const StepTiming& timing, const SolutionControls& controls)
+IncrementControl::IncrementControl(const StepTiming& timing, const model::SolutionControls& controls)
     : t_(timing), c_(controls) {
   // ccx: a minimum below 1e-6 of the step time (or none) becomes min(initial, 1e-6 * period).
   const Real floor = 1e-6 * t_.period;

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "nonlinear/solution_controls.hpp"
+#include "model/solution_controls.hpp"
 
 namespace kontakt::nonlinear {
 
@@ -20,7 +20,7 @@ struct StepTiming {
 
 class IncrementControl {
  public:
-  IncrementControl(const StepTiming& timing, const SolutionControls& controls);
+  IncrementControl(const StepTiming& timing, const model::SolutionControls& controls);
 
   Real step_time() const { return time_; }      ///< time reached by converged increments
   Real increment() const { return dt_; }        ///< size of the increment being attempted
@@ -42,7 +42,7 @@ class IncrementControl {
   void clip_to_step_end();
 
   StepTiming t_;
-  SolutionControls c_;
+  model::SolutionControls c_;
   Real dt_min_ = 0, dt_max_ = 0;
   Real time_ = 0, dt_ = 0;
   int n_increments_ = 0, n_cutbacks_ = 0;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "material/von_mises.hpp"
 #include "output/vtk_cells.hpp"
 
 #ifndef KONTAKT_VERSION
@@ -149,10 +150,7 @@ std::vector<double> to_vtk_tensor(const MatX6& m) {
 std::vector<double> mises(const MatX6& s) {
   std::vector<double> out(static_cast<std::size_t>(s.rows()));
   for (Index i = 0; i < s.rows(); ++i) {
-    const double a = s(i, 0) - s(i, 1), b = s(i, 1) - s(i, 2), c = s(i, 2) - s(i, 0);
-    out[static_cast<std::size_t>(i)] = std::sqrt(
-        0.5 * (a * a + b * b + c * c) +
-        3.0 * (s(i, 3) * s(i, 3) + s(i, 4) * s(i, 4) + s(i, 5) * s(i, 5)));
+    out[static_cast<std::size_t>(i)] = material::von_mises(s.row(i).transpose());
   }
   return out;
 }

@@ -28,7 +28,7 @@ struct Collect : analysis::FrameSink, analysis::EventSink {
 /// residual tolerance of 0.5 %.
 analysis::NonlinearOptions tight_options() {
   analysis::NonlinearOptions o;
-  nonlinear::SolutionControls c;
+  model::SolutionControls c;
   c.residual_tolerance = 1e-10;
   c.correction_tolerance = 1e-10;
   o.controls = c;

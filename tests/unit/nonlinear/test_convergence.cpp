@@ -44,7 +44,7 @@ TEST(Convergence, ResidualMustBeBelowTheToleranceTimesTheForceAverage) {
 }
 
 TEST(Convergence, LooseResidualToleranceAppliesAfterIterationIP) {
-  SolutionControls c;
+  model::SolutionControls c;
   Convergence conv(c, 0);
   conv.begin_increment();
   Real r = 1.9;
@@ -100,7 +100,7 @@ TEST(Convergence, SurfaceToSurfaceAllowsOnePerMilleChange) {
 }
 
 TEST(Convergence, SurfaceToSurfaceDivergenceNeedsSettledContactOrARepeatingPattern) {
-  SolutionControls c;
+  model::SolutionControls c;
   c.max_iterations = 60;
   // Residuals oscillating with period 3 while the contact count cycles 10, 12, 11: the
   // thesis' two-iteration pattern test would never see it; the general one does.
@@ -131,7 +131,7 @@ TEST(Convergence, SurfaceToSurfaceDivergenceNeedsSettledContactOrARepeatingPatte
 }
 
 TEST(Convergence, SurfaceToSurfaceHasNoLogEstimateButAnIterationCap) {
-  SolutionControls c;
+  model::SolutionControls c;
   c.max_iterations = 20;
   Convergence conv(c, 0);
   conv.set_contact_criteria(ContactCriteria::SurfaceToSurface, 1e-3);
@@ -146,7 +146,7 @@ TEST(Convergence, SurfaceToSurfaceHasNoLogEstimateButAnIterationCap) {
 }
 
 TEST(Convergence, DivergenceIsCheckedFromIterationI0Only) {
-  SolutionControls c;
+  model::SolutionControls c;
   Convergence conv(c, 0);
   conv.begin_increment();
   EXPECT_EQ(conv.check(1, measures(100, 10, 1)).kind, Kind::Iterate);
@@ -167,7 +167,7 @@ TEST(Convergence, NonFiniteValuesAreDivergenceAtOnce) {
 }
 
 TEST(Convergence, SlowConvergenceIsCutBackByTheLogarithmicEstimate) {
-  SolutionControls c;
+  model::SolutionControls c;
   for (Real rate : {0.9, 0.99}) {
     Convergence conv(c, 0);
     conv.begin_increment();
@@ -185,7 +185,7 @@ TEST(Convergence, SlowConvergenceIsCutBackByTheLogarithmicEstimate) {
 }
 
 TEST(Convergence, IterationICIsTheLastOne) {
-  SolutionControls c;
+  model::SolutionControls c;
   Convergence conv(c, 0);
   conv.begin_increment();
   Real r = 100;
@@ -211,7 +211,7 @@ TEST(Convergence, ForceAverageIsTheMeanOverConvergedIncrements) {
   }
   EXPECT_DOUBLE_EQ(conv.force_reference(), 200.0);
   // A fixed q_u overrides the average; an unset one starts from the previous step's q_bar.
-  SolutionControls fixed;
+  model::SolutionControls fixed;
   fixed.fixed_force_average = 42;
   EXPECT_DOUBLE_EQ(Convergence(fixed, 7).force_reference(), 42.0);
   EXPECT_DOUBLE_EQ(Convergence({}, 7).force_reference(), 7.0);

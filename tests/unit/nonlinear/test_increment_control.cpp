@@ -20,7 +20,7 @@ TEST(IncrementControl, GrowsAfterTwoFastIncrementsAndEndsExactlyAtTheStepEnd) {
 }
 
 TEST(IncrementControl, SlowIncrementShrinksTheNextAndMediumKeepsIt) {
-  SolutionControls c;
+  model::SolutionControls c;
   IncrementControl inc({.period = 1, .initial_increment = 0.2}, c);
   inc.converged(c.slow_increment_iterations + 1);
   EXPECT_NEAR(inc.increment(), 0.2 * c.slow_next_factor, 1e-15);
@@ -38,7 +38,7 @@ TEST(IncrementControl, MaximumIncrementAndStepEndLimitTheSize) {
 }
 
 TEST(IncrementControl, CutbacksShrinkTheIncrementUntilTheLimit) {
-  SolutionControls c;
+  model::SolutionControls c;
   IncrementControl inc({.period = 1, .initial_increment = 1}, c);
   for (int k = 1; k <= c.max_cutbacks; ++k) {
     inc.cut_back(0.5, "test");

@@ -4,7 +4,7 @@
 
 #include "core/types.hpp"
 
-namespace kontakt::nonlinear {
+namespace kontakt::model {
 
 struct SolutionControls {
   // *CONTROLS, PARAMETERS=TIME INCREMENTATION, first line
@@ -31,4 +31,4 @@ struct SolutionControls {
   Real linear_residual_ratio = 1e-8;  ///< R_l: residual small enough to skip the correction test
 };
 
-}  // namespace kontakt::nonlinear
+}  // namespace kontakt::model
