@@ -18,7 +18,7 @@ namespace {
 
 /// Node-to-surface pairing is redone in the first evaluations of an increment and then frozen
 /// (ccx: iterations up to 8), so the active set can settle.
-constexpr int kRepairEvaluations = 8;
+constexpr int kRepairEvaluations = nonlinear::kRepairingIterations;
 constexpr Real kNoClearanceLimit = std::numeric_limits<Real>::infinity();
 
 /// ccx's nodal weights of a slave face's area for node-to-surface contact: the consistent
@@ -43,6 +43,7 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
     pair.scheme = def.scheme;
     pair.behavior = model.interactions.at(def.interaction).behavior;
     pair.law = make_pressure_law(pair.behavior, pair.scheme.linear);
+    pair.penalty = reference_stiffness(pair.law);
     pair.slave = make_contact_surface(model, model.surfaces.at(def.slave));
     pair.master = make_contact_surface(model, model.surfaces.at(def.master));
     if (pair.master.faces.empty())
@@ -91,7 +92,7 @@ model::SolutionControls ContactSystem::solution_controls(
 
 bool ContactSystem::wants_line_search(int iteration) const {
   return criteria() == nonlinear::ContactCriteria::SurfaceToSurface && iteration > 1 &&
-         n_active_ > 0;
+         sums_.active > 0;
 }
 
 ContactSystem::UnitGeometry ContactSystem::geometry(const Unit& unit, const VecX& u) const {
@@ -183,13 +184,17 @@ void ContactSystem::build_points(Unit& unit, const VecX& u) const {
   for (Point& pt : unit.points) {
     pt.overlap0 = pt.closure = 0;
     pt.pairing = pair_point(unit, g, pt, u);
+    pt.frozen_master = pt.pairing.master;
     if (pt.pairing.master < 0) continue;
-    const Real gap = pt.pairing.gap;
+    const Real gap = pt.frozen_gap = pt.pairing.gap;
     if (ramp && gap < 0 && theta < 1) pt.overlap0 = gap / (1 - theta);
     if (close_gaps && gap >= 0 && gap < 1 / pair.behavior.stiffness) pt.closure = gap;
-    if (!pair.scheme.linear && (pt.overlap0 != 0 || pt.closure != 0))
+    if (!pair.scheme.linear && (pt.overlap0 != 0 || pt.closure != 0)) {
       pt.pairing = pair_point(unit, g, pt, u);  // existence with the offsets applied
-    if (pair.scheme.linear) freeze(unit, g, pt, u);
+      pt.frozen_master = pt.pairing.master;
+      if (pt.pairing.master < 0) continue;
+    }
+    freeze(unit, g, pt, u);
   }
 }
 
@@ -227,7 +232,7 @@ ContactSystem::Pairing ContactSystem::pair_point(const Unit& unit, const UnitGeo
 }
 
 void ContactSystem::freeze(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const {
-  const FaceGeometry& m = g.masters[pt.pairing.master];
+  const FaceGeometry& m = g.masters[pt.frozen_master];
   FaceShape s;
   face_shape(m.topo, pt.pairing.xi_m, s);
   pt.frozen.master_weights = s.N;
@@ -239,6 +244,8 @@ void ContactSystem::freeze(const Unit& unit, const UnitGeometry& g, Point& pt, c
 void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, int threads) {
   ctx_ = ctx;
   evaluations_ = 0;
+  repair_once_ = false;
+  stabilisation_ = 0;  // springs belong to one increment
   // Broad phase: one tree over each pair's master faces; candidates within one face size.
   std::vector<AabbTree> trees;
   std::vector<Real> margins;
@@ -292,78 +299,129 @@ void ContactSystem::build_groups() {
   }
 }
 
-ForceMeasure ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool repair) {
+void ContactSystem::Sums::add(const Sums& o) {
+  force.abs_sum += o.force.abs_sum;
+  force.components += o.force.components;
+  active += o.active;
+  contact_force += o.contact_force;
+  stabilisation_force += o.stabilisation_force;
+  stabilisation_energy += o.stabilisation_energy;
+  stabilisation_pull += o.stabilisation_pull;
+  spring_stiffness += o.spring_stiffness;
+  min_open_gap = std::min(min_open_gap, o.min_open_gap);
+}
+
+ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool repair) {
   const Pair& pair = pairs_[unit.pair];
   for (int gi : unit.groups) {
     if (gi < 0) continue;
     contributions_[gi].K.setZero();
     contributions_[gi].f_int.setZero();
   }
-  ForceMeasure force;
-  if (unit.points.empty()) return force;
+  Sums sums;
+  if (unit.points.empty()) return sums;
   const UnitGeometry g = geometry(unit, u);
   const PressureLaw& law = pair.law;
+  // The stabilisation spring: linear in the change of the frozen gap, in tension too.
+  PressureLaw spring_law;
+  spring_law.kind = PressureLaw::Kind::Tied;
+  spring_law.stiffness = stabilisation_ * pair.penalty;
+  auto add = [&](const PointResponse& r, int master) {
+    GroupContribution& c = contributions_[unit.groups[master]];
+    c.K += r.K;
+    c.f_int += r.f_int;
+    sums.force.abs_sum += r.f_int.cwiseAbs().sum();
+    sums.force.components += r.f_int.size();
+  };
   PointResponse r;
-  for (Point& pt : unit.points) {
+  // The contact response of one point into its trial state; true when it is active.
+  auto contact_response = [&](Point& pt) {
     PointState& s = pt.trial;
-    s = {};
     if (repair) pt.pairing = pair_point(unit, g, pt, u);
     Pairing& p = pt.pairing;
-    if (p.master < 0) continue;
+    if (p.master < 0) return false;
     if (pair.scheme.linear) {
       pt.frozen.gap_offset = gap_offset(pt);
       frozen_point_response(g.slave.x, g.masters[p.master].x, pt.frozen, law, 0, r);
       s.area = pt.frozen.area;
     } else {
-      if (!p.exists) continue;
+      if (!p.exists) return false;
       Vec2 xi = p.xi_m;
       if (!sliding_point_response(g.slave.x, slave_weights(unit, pt), g.masters[p.master], xi,
                                   p.area, gap_offset(pt), law, kNoClearanceLimit, r))
-        continue;
-      // Frozen pairing may let the foot slide off its face; far off, the face no longer
-      // represents the surface under the point.
-      if (!inside_reference_face(g.masters[p.master].topo, xi, 0.5)) continue;
+        return false;
       p.xi_m = xi;
       s.area = p.area;
     }
     s.gap = r.gap;
-    if (!r.active) continue;
+    if (!r.active) return false;
     s.active = true;
     s.pressure = r.pressure.pressure;
     s.energy = r.pressure.energy * s.area;
-    GroupContribution& c = contributions_[unit.groups[p.master]];
-    c.K += r.K;
-    c.f_int += r.f_int;
-    force.abs_sum += r.f_int.cwiseAbs().sum();
-    force.components += r.f_int.size();
+    add(r, p.master);
+    ++sums.active;
+    sums.contact_force += std::abs(s.pressure) * s.area;
+    return true;
+  };
+  for (Point& pt : unit.points) {
+    pt.trial = {};
+    Real spring_gap = -1;  // geometric gap along the spring's frozen normal
+    if (stabilisation_ > 0 && pt.frozen_master >= 0) {
+      FrozenPoint spring = pt.frozen;
+      spring.gap_offset = -pt.frozen_gap;
+      frozen_point_response(g.slave.x, g.masters[pt.frozen_master].x, spring, spring_law, 0, r);
+      add(r, pt.frozen_master);
+      sums.stabilisation_force += std::abs(r.pressure.pressure) * spring.area;
+      sums.stabilisation_pull -= r.pressure.pressure * spring.area;
+      sums.stabilisation_energy += r.pressure.energy * spring.area;
+      sums.spring_stiffness += spring_law.stiffness * spring.area;
+      spring_gap = r.gap + pt.frozen_gap;
+    }
+    if (!contact_response(pt) && spring_gap > 0)
+      sums.min_open_gap = std::min(sums.min_open_gap, spring_gap);
   }
-  return force;
+  return sums;
 }
 
 void ContactSystem::update(const VecX& u, int threads) {
   ++evaluations_;
-  std::vector<int> active(units_.size(), 0);
-  std::vector<ForceMeasure> force(units_.size());
+  std::vector<Sums> sums(units_.size());
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       Unit& unit = units_[k];
       const Pair& pair = pairs_[unit.pair];
-      const bool repair = !pair.scheme.linear && !pair.def->small_sliding && evaluations_ > 1 &&
-                          evaluations_ <= kRepairEvaluations;
-      force[k] = evaluate_unit(unit, u, repair);
-      for (const Point& pt : unit.points) active[k] += pt.trial.active;
+      const bool repair = !pair.scheme.linear && !pair.def->small_sliding &&
+                          (repair_once_ ? evaluations_ == 1
+                                        : evaluations_ > 1 && evaluations_ <= kRepairEvaluations);
+      sums[k] = evaluate_unit(unit, u, repair);
     }
   });
-  n_active_ = 0;
-  force_ = {};
-  for (std::size_t k = 0; k < units_.size(); ++k) {
-    n_active_ += active[k];
-    force_.abs_sum += force[k].abs_sum;
-    force_.components += force[k].components;
-  }
+  sums_ = {};
+  for (const Sums& s : sums) sums_.add(s);
   for (const auto& c : contributions_)
     if (!c.f_int.allFinite() || !c.K.allFinite())
       throw SolverError("contact: non-finite contact force or stiffness");
+}
+
+void ContactSystem::set_stabilisation(Real factor) {
+  if (factor == stabilisation_) return;
+  stabilisation_ = factor;
+  repair_once_ = true;
+  evaluations_ = 0;
+}
+
+std::optional<Real> ContactSystem::approach_ratio() const {
+  const Real closing = -sums_.stabilisation_pull;
+  if (sums_.active > 0 || closing <= 0 || sums_.spring_stiffness <= 0 ||
+      !std::isfinite(sums_.min_open_gap))
+    return std::nullopt;
+  const Real d = closing / sums_.spring_stiffness;
+  return d / (d + 1.2 * sums_.min_open_gap);
+}
+
+Real ContactSystem::stabilisation_share() const {
+  const Real total = sums_.stabilisation_force + sums_.contact_force;
+  return total > 0 ? sums_.stabilisation_force / total : 0;
 }
 
 ForceMeasure ContactSystem::add_to(const assembly::AssemblyPlan& plan, const VecX& prescribed_step,
@@ -383,7 +441,7 @@ ForceMeasure ContactSystem::add_to(const assembly::AssemblyPlan& plan, const Vec
       internal_force.segment<3>(3 * nodes[a]) += c.f_int.segment<3>(3 * a);
   }
   assembly::scatter_groups(plan, prescribed_step, K, f, system);
-  return force_;
+  return sums_.force;
 }
 
 namespace {

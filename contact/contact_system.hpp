@@ -17,6 +17,8 @@
 // The driver also asks which convergence rules, solution controls and line search apply.
 #pragma once
 
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +90,7 @@ class ContactSystem {
   bool wants_line_search(int iteration) const;
 
   // --- Lifecycle --------------------------------------------------------------------------
+  /// Also switches the stabilisation springs off.
   void begin_increment(const VecX& u, const IncrementContext& ctx, int threads);
   /// Node lists of the contact groups of this increment (slave nodes first, then the master
   /// face's nodes); the same while begin_increment found the same candidates.
@@ -104,13 +107,36 @@ class ContactSystem {
   /// Each group's force and tangent after the last update() (what add_to scatters).
   const std::vector<GroupContribution>& contributions() const { return contributions_; }
   /// Contact elements (points or nodes carrying force) after the last update().
-  int n_active() const { return n_active_; }
+  int n_active() const { return sums_.active; }
 
   /// The verdict on an increment converged at `u` (thesis section 7.1: frozen projections
   /// that no longer lie under their points give wrong gaps).
   Acceptance accept(const VecX& u) const;
   void commit();
   void roll_back();
+
+  // --- Contact stabilisation (README: a continuation in a normal spring) --------------------
+  /// Normal springs of `factor` times the pair's penalty per unit area on every point paired
+  /// at begin_increment, acting on the change of its gap since then (frozen normal and foot
+  /// point); 0 switches them off. They hold a body that contact alone holds before it touches.
+  /// A change of the springs starts a new Newton solve from the current iterate (a new level,
+  /// a release, or a return to a saved level): the nonlinear variants re-pair once, at the
+  /// next update's state, and keep that pairing through the solve, so each solve is smooth in
+  /// the displacements (re-pairing within it is what makes point contacts chatter). Until the
+  /// next begin_increment, also a change back to no springs (the release) keeps this rule.
+  void set_stabilisation(Real factor);
+  Real stabilisation() const { return stabilisation_; }
+  /// The springs' energy at the last update, and the share of the normal force they carried
+  /// there (springs over springs plus contact pressures).
+  Real stabilisation_energy() const { return sums_.stabilisation_energy; }
+  Real stabilisation_share() const;
+  /// True when, at the last update, no point touched and the springs pulled the slave
+  /// surfaces back towards their masters on balance: the loads move the bodies apart.
+  bool separating() const { return sums_.active == 0 && sums_.stabilisation_pull > 0; }
+  /// While no point touches and the springs are compressed (the bodies moved towards each
+  /// other by their mean compression d): the ratio of spring factors d / (d + 1.2 g) that moves
+  /// them about 1.2 times the smallest open gap g further under the same load. Else nullopt.
+  std::optional<Real> approach_ratio() const;
 
   // --- Output of the committed state --------------------------------------------------------
   /// The contact points, the nodal contact values and the active count of the committed
@@ -139,7 +165,11 @@ class ContactSystem {
     Vec2 xi_s = Vec2::Zero();
     Real ref_weight = 0;        ///< area = ref_weight * |J_slave(xi_s)|; NTS: the nodal area
     Pairing pairing{};
-    FrozenPoint frozen{};       ///< linear variants
+    /// The pairing at begin_increment, frozen (foot weights, normal, area): what the linear
+    /// variants evaluate, and where every scheme's stabilisation spring acts.
+    FrozenPoint frozen{};
+    int frozen_master = -1;
+    Real frozen_gap = 0;        ///< geometric gap at begin_increment
     Real overlap0 = 0;          ///< initial overlap being ramped out (<= 0)
     Real closure = 0;           ///< tiny initial gap counted as closed (>= 0)
     PointState trial{}, committed{};
@@ -158,6 +188,7 @@ class ContactSystem {
     model::ContactScheme scheme;
     model::SurfaceBehavior behavior;
     PressureLaw law;            ///< the scheme's law for this behaviour
+    Real penalty = 0;           ///< reference_stiffness(law): scales the stabilisation
     ContactSurface slave, master;
     /// node-to-surface: the faces nodal areas come from (the slave faces, or for a node-based
     /// slave surface the exterior faces at its nodes) and, per node, (face, local node)
@@ -185,9 +216,19 @@ class ContactSystem {
                      const VecX& u) const;
   void freeze(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const;
   void build_groups();
-  /// Evaluates one unit into its points' trial states and its groups; returns the force
-  /// measure of its active points.
-  ForceMeasure evaluate_unit(Unit& unit, const VecX& u, bool repair);
+  /// What the evaluation of a unit adds up.
+  struct Sums {
+    ForceMeasure force;         ///< of the active points and the stabilisation springs
+    int active = 0;
+    Real contact_force = 0;     ///< sum of |normal force| of the active points
+    Real stabilisation_force = 0, stabilisation_energy = 0;
+    Real stabilisation_pull = 0;  ///< sum of the springs' tensions (minus their compressions)
+    Real spring_stiffness = 0;    ///< sum of the springs' k A
+    Real min_open_gap = std::numeric_limits<Real>::infinity();  ///< over paired open points
+    void add(const Sums& o);
+  };
+  /// Evaluates one unit into its points' trial states and its groups.
+  Sums evaluate_unit(Unit& unit, const VecX& u, bool repair);
 
   const model::Model& model_;
   std::vector<Pair> pairs_;
@@ -195,9 +236,10 @@ class ContactSystem {
   std::vector<std::vector<int>> group_nodes_;
   std::vector<GroupContribution> contributions_;
   IncrementContext ctx_;
-  int evaluations_ = 0;         ///< update() calls in this increment (they decide re-pairing)
-  int n_active_ = 0;
-  ForceMeasure force_;
+  int evaluations_ = 0;         ///< update() calls in this solve (they decide re-pairing)
+  bool repair_once_ = false;    ///< stabilised solves: re-pair at their first update only
+  Real stabilisation_ = 0;
+  Sums sums_;                   ///< of the last update
 };
 
 }  // namespace kontakt::contact

@@ -97,6 +97,20 @@ bool is_active(const PressureLaw& law, Real d, Real clearance) {
   }
 }
 
+Real reference_stiffness(const PressureLaw& law) {
+  switch (law.kind) {
+    case PressureLaw::Kind::Exponential: return law.p0 * law.beta;
+    case PressureLaw::Kind::Tabular: {
+      Real k = 0;
+      for (std::size_t i = 1; i < law.table.size(); ++i)
+        k = std::max(k, (law.table[i].second - law.table[i - 1].second) /
+                            (law.table[i].first - law.table[i - 1].first));
+      return k;
+    }
+    default: return law.stiffness;
+  }
+}
+
 Real creation_clearance(const model::SurfaceBehavior& b, Real area) {
   using Law = model::SurfaceBehavior::Law;
   if (b.law == Law::Exponential) return b.exp_c0;

@@ -43,6 +43,11 @@ PressureResponse pressure_overclosure(const PressureLaw& law, Real d);
 /// creation clearance (ccx: c0 * sqrt(A) for LINEAR/TABULAR, c0 for EXPONENTIAL).
 bool is_active(const PressureLaw& law, Real d, Real creation_clearance);
 
+/// A pressure per unit overclosure that stands for the law's stiffness: K for the linear,
+/// quasi-bilinear and tied laws, p0 * beta for the exponential law at zero clearance, the
+/// steepest segment of a table.
+Real reference_stiffness(const PressureLaw& law);
+
 /// The creation clearance of a point that represents slave area `area`.
 Real creation_clearance(const model::SurfaceBehavior& behavior, Real area);
 

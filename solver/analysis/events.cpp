@@ -36,6 +36,9 @@ std::string to_json_line(const Event& e) {
   if (e.residual >= 0) j["residual"] = e.residual;
   if (e.correction >= 0) j["correction"] = e.correction;
   if (e.contact_elements >= 0) j["contact_elements"] = e.contact_elements;
+  if (e.stabilisation > 0) j["stabilisation"] = e.stabilisation;
+  if (e.stabilisation_energy >= 0) j["stabilisation_energy"] = e.stabilisation_energy;
+  if (e.strain_energy >= 0) j["strain_energy"] = e.strain_energy;
   if (!e.status.empty()) j["status"] = e.status;
   if (!e.message.empty()) j["message"] = e.message;
   if (e.kind == Event::Kind::Done) {

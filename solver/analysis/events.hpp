@@ -15,6 +15,11 @@ struct Event {
   Real step_time = 0, total_time = 0, dt = 0;
   Real residual = -1, correction = -1;  ///< ccx-style ratios in %, -1 when not measured
   int contact_elements = -1;            ///< active contact elements, -1 for models without contact
+  /// Iteration: the contact stabilisation's spring factor (0: off). Increment (models with
+  /// contact): the energy the stabilisation absorbed in it and the strain energy at its end
+  /// (-1: not reported).
+  Real stabilisation = 0;
+  Real stabilisation_energy = -1, strain_energy = -1;
   Real wall_time = 0;                   ///< seconds since the run started
   std::string status{};                 ///< Done: converged | not_converged | input_error | error
   std::string message{};                ///< Warning, Error and Done: human-readable text

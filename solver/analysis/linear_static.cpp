@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "analysis/element_access.hpp"
+#include "analysis/singular_system.hpp"
 #include "analysis/small_strain_frame.hpp"
 #include "analysis/step_loads.hpp"
 #include "analysis/constraint_layout.hpp"
@@ -36,28 +37,6 @@ void require_linear(const model::Model& model) {
     throw InputError({model.source_file, 0}, "*STEP", "the deck defines no step");
 }
 
-std::string singular_mode_warning(const model::Model& model, const assembly::DofMap& dofs,
-                                  const linsolve::SpdSolveReport& report) {
-  std::string where = report.singular_equation >= 0
-                          ? " at " + dofs.describe(model, dofs.equation_dof(report.singular_equation))
-                          : "";
-  return "the stiffness matrix has a zero-energy mode" + where +
-         " (hourglassing of reduced-integration elements or a missing constraint) that the loads "
-         "do not excite; solved with stabilisation, the displacement in that mode is not "
-         "determined by the model";
-}
-
-/// Names the dof behind a singular pivot, if the solver could tell which.
-[[noreturn]] void rethrow_singular(const model::Model& model, const assembly::DofMap& dofs,
-                                   const linsolve::SingularMatrix& e) {
-  std::string msg = e.what();
-  if (e.equation() >= 0)
-    msg += " at " + dofs.describe(model, dofs.equation_dof(e.equation())) +
-           ": it is not held by any element stiffness or boundary condition";
-  else
-    msg += ": the model has an unconstrained rigid-body mode or a mechanism";
-  throw SolverError(msg);
-}
 
 }  // namespace
 
@@ -126,7 +105,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
       stop_if_cancelled("the solve");
       x = spd.solve(plan.pattern, system.values, system.rhs, report);
     } catch (const linsolve::SingularMatrix& e) {
-      rethrow_singular(model, dofs, e);
+      throw singular_system_error(model, dofs, e);
     }
     if (report.stabilised)
       events.on_event({.kind = Event::Kind::Warning, .step = step_no, .wall_time = wall(),

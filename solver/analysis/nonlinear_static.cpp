@@ -23,8 +23,11 @@
 #include "analysis/constraint_layout.hpp"
 #include "analysis/element_access.hpp"
 #include "analysis/nonlinear_system.hpp"
+#include "analysis/singular_system.hpp"
 #include "analysis/step_loads.hpp"
+#include "analysis/support_check.hpp"
 #include "contact/contact_system.hpp"
+#include "contact/stabilisation_schedule.hpp"
 #include "core/parallel.hpp"
 #include "linsolve/spd_solve.hpp"
 #include "material/von_mises.hpp"
@@ -110,6 +113,7 @@ class NonlinearStatic {
     convergence_.emplace(sc.controls, last_q_bar_);
     convergence_->set_contact_criteria(contact_.criteria(), step.contact_controls.delcon);
     increments_.emplace(step_timing(step), sc.controls);
+    step_stabilisation_energy_ = 0;
     predictor_ = {};  // a step starts from its converged state
 
     while (!increments_->finished()) try_increment(sc);
@@ -155,8 +159,10 @@ class NonlinearStatic {
     return ev;
   }
 
-  /// Tries the increment IncrementControl proposes: converges and commits it, or cuts back.
-  void try_increment(const StepContext& sc) {
+  /// An attempt at the increment IncrementControl proposes, at its start: iteration 1 starts
+  /// from the static predictor's extrapolation of the converged state and moves the prescribed
+  /// dofs to their new values through the linearised system.
+  Attempt begin_attempt(const StepContext& sc) {
     const assembly::DofMap& dofs = layout_.dofs();
     Attempt a;
     a.t_old = increments_->step_time();
@@ -165,8 +171,6 @@ class NonlinearStatic {
     a.g = prescribed_values(model_, *sc.step, dofs, a.t, total_time_start_ + a.t, a.ramp,
                             sc.u_start, sc.u_start);
     a.dT = dT_prev_ * (1 - a.ramp) + sc.dT_end * a.ramp;
-    // Iteration 1 starts from the static predictor's extrapolation of the converged state
-    // and moves the prescribed dofs to their new values through the linearised system.
     const VecX u_predicted = predictor_.start(u_, increments_->increment());
     a.x.resize(dofs.n_equations());
     a.g_old.resize(dofs.n_prescribed());
@@ -180,31 +184,127 @@ class NonlinearStatic {
                                threads_);
       layout_.set_contact_groups(contact_.groups(), *solver_, threads_);
     }
+    return a;
+  }
 
-    nonlinear::Verdict verdict;
-    bool started = false;
+  /// Tries the increment IncrementControl proposes: converges and commits it, or cuts back.
+  /// With contact stabilisation engaged (StabilisationSchedule), the attempt runs through the
+  /// schedule's levels, each a Newton solve of its own, and ends with the springs released.
+  void try_increment(const StepContext& sc) {
+    Attempt a = begin_attempt(sc);
+    const VecX x_start = a.x, u_start = a.u;
+    VecX x_saved, u_saved;  // the last converged stabilised level
+    std::string engaged_because;
+    const auto mode = options_.contact_stabilisation;
+    if (!contact_.empty() && (mode == ContactStabilisation::Always ||
+                              (mode == ContactStabilisation::Auto && retry_stabilised_)))
+      stabilisation_.engage();
+    else
+      stabilisation_.disengage();
+    contact_.set_stabilisation(stabilisation_.factor());
+    bool at_start = true;   // the iterate sits where the attempt started
+    int level_it = 0;       // iterations of the current level (of the attempt, unstabilised)
     for (int it = 1;; ++it) {
       if (options_.cancel && options_.cancel->load())
         throw Cancelled("cancelled in step " + std::to_string(sc.number) + ", increment " +
                         std::to_string(increments_->increment_number()));
+      nonlinear::Verdict verdict;
+      bool singular = false;
       try {
-        if (it == 1) {
-          a.ev = evaluate(sc, a, a.u, a.g - a.g_old);
+        if (level_it == 0) {
+          a.ev = evaluate(sc, a, a.u,
+                          at_start ? VecX(a.g - a.g_old) : VecX::Zero(a.g.size()));
           convergence_->begin_increment(contact_count());
-          started = true;
+          at_start = false;
         }
-        verdict = iterate(sc, a, it);
-      } catch (const SolverError& e) {  // singular tangent, inverted element: cut back
-        if (!started) convergence_->begin_increment();
-        verdict = {.kind = nonlinear::Verdict::Kind::Cutback,
-                   .cutback_factor = sc.controls.divergence_cutback, .reason = e.what()};
+        verdict = iterate(sc, a, ++level_it);
+      } catch (const linsolve::SingularMatrix& e) {
+        if (level_it == 0) convergence_->begin_increment();
+        verdict = failure(sc, singular_system_error(model_, layout_.dofs(), e).what());
+        singular = true;
+      } catch (const SolverError& e) {  // inverted element, non-finite contact: cut back
+        if (level_it == 0) convergence_->begin_increment();
+        verdict = failure(sc, e.what());
       }
       ++total_iterations_;
       report_iteration(sc, a, it, verdict);
-      if (verdict.kind == nonlinear::Verdict::Kind::Converged) verdict = judged_by_contact(sc, a.u);
-      if (verdict.kind == nonlinear::Verdict::Kind::Converged) return commit_increment(sc, a, it);
-      if (verdict.kind == nonlinear::Verdict::Kind::Cutback) return cut_back(sc, a, it, verdict);
+
+      if (singular && !contact_.empty() && !stabilisation_.engaged() &&
+          options_.contact_stabilisation != ContactStabilisation::Never) {
+        // A body that only contact holds does not touch (yet): hold it with springs instead,
+        // from the start of the attempt.
+        const std::string held = bodies_held_only_by_contact(model_, layout_.dofs());
+        if (!held.empty()) verdict.reason += "; " + held;
+        engaged_because = verdict.reason;
+        warn(sc.number, "increment " + std::to_string(increments_->increment_number()) + ": " +
+                            verdict.reason + "; contact stabilisation engaged");
+        stabilisation_.engage();
+        contact_.set_stabilisation(stabilisation_.factor());
+        a.x = x_start;
+        a.u = u_start;
+        at_start = true;
+        level_it = 0;
+        continue;
+      }
+      using Next = contact::StabilisationSchedule::Next;
+      if (verdict.kind == nonlinear::Verdict::Kind::Converged && stabilisation_.engaged() &&
+          !stabilisation_.releasing()) {
+        // A stabilised level converged: step down, release the springs, or accept springs
+        // that carry a negligible share of the load.
+        if (contact_.separating())
+          throw NonConvergence(
+              "step " + std::to_string(sc.number) + ", increment " +
+              std::to_string(increments_->increment_number()) +
+              ": the loads move a body that only contact holds away from its contact (" +
+              (engaged_because.empty() ? "no contact point touches" : engaged_because) +
+              "): it has no equilibrium");
+        x_saved = a.x;
+        u_saved = a.u;
+        const Next next = stabilisation_.converged(contact_.stabilisation_energy(),
+                                                   contact_.stabilisation_share(),
+                                                   contact_.approach_ratio());
+        if (next == Next::Continue) {
+          contact_.set_stabilisation(stabilisation_.factor());
+          level_it = 0;
+          continue;
+        }
+        if (next == Next::GiveUp)
+          verdict = failure(sc, "contact stabilisation: the springs still carry " +
+                                    std::to_string(contact_.stabilisation_share()) +
+                                    " of the normal force at their last level");
+      }
+      if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
+        verdict = judged_by_contact(sc, a.u);
+        if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
+          retry_stabilised_ = false;
+          return commit_increment(sc, a, it);
+        }
+        return cut_back(sc, a, it, verdict);
+      }
+      if (verdict.kind != nonlinear::Verdict::Kind::Cutback) continue;
+      if (stabilisation_.releasing()) {
+        if (stabilisation_.failed() == Next::RestoreAndContinue) {
+          a.x = x_saved;
+          a.u = u_saved;
+          contact_.set_stabilisation(stabilisation_.factor());
+          level_it = 0;
+          continue;
+        }
+      }
+      // The retry of a failed attempt with contact starts stabilised: a contact set that
+      // chatters (point contact, coarse meshes) settles while the springs hold the bodies.
+      retry_stabilised_ = !contact_.empty();
+      return cut_back(sc, a, it, verdict);
     }
+  }
+
+  /// The verdict for an iteration that could not be completed.
+  static nonlinear::Verdict failure(const StepContext& sc, std::string reason) {
+    nonlinear::Verdict v;
+    v.kind = nonlinear::Verdict::Kind::Cutback;
+    v.cutback_factor = sc.controls.divergence_cutback;
+    v.reason = std::move(reason);
+    return v;
   }
 
   /// One Newton iteration from the iterate in `a`: solve, update, evaluate, judge.
@@ -214,6 +314,13 @@ class NonlinearStatic {
     linsolve::SpdSolveReport report;
     spd_.factorise(plan.pattern, a.ev.system.values, report);
     const VecX dx = spd_.solve(plan.pattern, a.ev.system.values, a.ev.system.rhs, report);
+    if (report.stabilised && !warned_zero_energy_mode_) {
+      warned_zero_energy_mode_ = true;
+      const std::string held =
+          contact_.n_active() == 0 ? bodies_held_only_by_contact(model_, dofs) : "";
+      warn(sc.number, singular_mode_warning(model_, dofs, report) +
+                          (held.empty() ? "" : "; " + held + ", and nothing touches"));
+    }
     const VecX x_old = a.x, rhs_old = a.ev.system.rhs, no_step = VecX::Zero(dofs.n_prescribed());
     a.x = x_old + dx;
     VecX u_new = dofs.expand(a.x, a.g);
@@ -279,10 +386,27 @@ class NonlinearStatic {
     }
     for (Index k = 0; k < frame.S.rows(); ++k)
       max_mises_ = std::max(max_mises_, material::von_mises(frame.S.row(k).transpose()));
-    events_.on_event({.kind = Event::Kind::Increment, .step = sc.number,
-                      .increment = increment_no, .attempt = attempt, .iteration = it,
-                      .step_time = a.t, .total_time = total_time_start_ + a.t, .dt = dt,
-                      .contact_elements = contact_count(), .wall_time = wall()});
+    Event increment{.kind = Event::Kind::Increment, .step = sc.number,
+                    .increment = increment_no, .attempt = attempt, .iteration = it,
+                    .step_time = a.t, .total_time = total_time_start_ + a.t, .dt = dt,
+                    .contact_elements = contact_count(), .wall_time = wall()};
+    if (!contact_.empty()) {
+      // The energy the contact stabilisation absorbed beside the strain energy (Abaqus: ALLSD
+      // and ALLIE); what the increment commits is the unstabilised equilibrium either way.
+      const Real strain_energy = frame.ENER.dot(frame.ip_volume);
+      step_stabilisation_energy_ += stabilisation_.absorbed_energy();
+      increment.stabilisation_energy = stabilisation_.absorbed_energy();
+      increment.strain_energy = strain_energy;
+      if (frame.is_step_end && step_stabilisation_energy_ > 0.01 * std::abs(strain_energy))
+        warn(sc.number, "the contact stabilisation absorbed " +
+                            std::to_string(step_stabilisation_energy_) + " in step " +
+                            std::to_string(sc.number) + ", more than 1 % of the strain energy (" +
+                            std::to_string(strain_energy) +
+                            "): the path to the step's end differs from the unstabilised one "
+                            "where it depends on the path (friction, plasticity); the end state "
+                            "of every increment is the unstabilised equilibrium");
+    }
+    events_.on_event(increment);
     frames_.on_frame(*sc.step, frame);
   }
 
@@ -307,7 +431,8 @@ class NonlinearStatic {
                       .total_time = total_time_start_ + a.t, .dt = increments_->increment(),
                       .residual = 100 * verdict.residual_ratio,
                       .correction = 100 * verdict.correction_ratio,
-                      .contact_elements = contact_count(), .wall_time = wall()});
+                      .contact_elements = contact_count(),
+                      .stabilisation = contact_.stabilisation(), .wall_time = wall()});
   }
 
   void warn(int step, const std::string& message) {
@@ -353,9 +478,13 @@ class NonlinearStatic {
   std::optional<nonlinear::Convergence> convergence_;
   std::optional<nonlinear::IncrementControl> increments_;
   nonlinear::StaticPredictor predictor_;
+  contact::StabilisationSchedule stabilisation_;
+  bool retry_stabilised_ = false;  ///< the increment's last attempt failed (with contact)
+  bool warned_zero_energy_mode_ = false;
 
   // Figures for the done event
   int total_iterations_ = 0, drift_redos_ = 0;
+  Real step_stabilisation_energy_ = 0;
   Real max_mises_ = 0, max_contact_pressure_ = 0, total_contact_force_ = 0;
 };
 

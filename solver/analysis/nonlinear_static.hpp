@@ -13,11 +13,17 @@
 
 namespace kontakt::analysis {
 
+/// When contact stabilisation (contact/stabilisation_schedule.hpp) engages: when an increment
+/// needs it (a singular tangent with contact, or the retry of a failed attempt), in every
+/// increment (to show that it leaves the unstabilised answer), or never.
+enum class ContactStabilisation { Auto, Always, Never };
+
 struct NonlinearOptions {
   int threads = 0;                                ///< 0 = all cores
   const std::atomic<bool>* cancel = nullptr;      ///< polled once per iteration
   /// Overrides every step's *CONTROLS when set (tests, expert use).
   std::optional<model::SolutionControls> controls;
+  ContactStabilisation contact_stabilisation = ContactStabilisation::Auto;
 };
 
 /// Solves every step. Throws NonConvergence when an increment cannot be completed (after the

@@ -20,7 +20,9 @@ struct DisjointSets {
 
 }  // namespace
 
-void check_bodies_supported(const model::Model& model, const assembly::DofMap& dofs) {
+std::vector<UnsupportedBody> unsupported_bodies(const model::Model& model,
+                                               const assembly::DofMap& dofs,
+                                               bool contact_holds) {
   const int n_nodes = model.n_nodes();
   DisjointSets bodies(n_nodes);
   std::vector<char> in_element(n_nodes, 0);
@@ -32,15 +34,16 @@ void check_bodies_supported(const model::Model& model, const assembly::DofMap& d
   for (const auto& eq : model.equations)
     for (const auto& term : eq.terms) bodies.join(eq.terms.front().node, term.node);
   // Contact can hold a body against another: the two sides of a pair count as one body.
-  for (const auto& pair : model.contact_pairs) {
-    std::vector<int> nodes;
-    for (const auto* name : {&pair.slave, &pair.master}) {
-      const auto& surface = model.surfaces.at(*name);
-      for (int n : surface.nodes) nodes.push_back(n);
-      for (const auto& f : surface.faces) nodes.push_back(model.mesh.elements[f.element].nodes.front());
+  if (contact_holds)
+    for (const auto& pair : model.contact_pairs) {
+      std::vector<int> nodes;
+      for (const auto* name : {&pair.slave, &pair.master}) {
+        const auto& surface = model.surfaces.at(*name);
+        for (int n : surface.nodes) nodes.push_back(n);
+        for (const auto& f : surface.faces) nodes.push_back(model.mesh.elements[f.element].nodes.front());
+      }
+      for (int n : nodes) bodies.join(nodes.front(), n);
     }
-    for (int n : nodes) bodies.join(nodes.front(), n);
-  }
 
   // A body is held in a direction when some dof in it is prescribed in that direction.
   std::vector<std::array<char, 3>> held(n_nodes, {0, 0, 0});
@@ -48,17 +51,33 @@ void check_bodies_supported(const model::Model& model, const assembly::DofMap& d
     const int d = dofs.prescribed_dof(slot);
     held[bodies.find(d / 3)][d % 3] = 1;
   }
+  std::vector<UnsupportedBody> out;
   for (int node = 0; node < n_nodes; ++node) {
     if (!in_element[node] || bodies.find(node) != node) continue;
     const auto& h = held[node];
     if (h[0] && h[1] && h[2]) continue;
-    std::string missing;
+    UnsupportedBody b{.node = model.mesh.node_ids[node], .free = ""};
     for (int c = 0; c < 3; ++c)
-      if (!h[c]) missing += std::string(missing.empty() ? "" : ", ") + "xyz"[c];
-    throw SolverError("the body containing node " + std::to_string(model.mesh.node_ids[node]) +
-                      " has no displacement boundary condition in " + missing +
-                      ": it can move as a rigid body (add *BOUNDARY constraints)");
+      if (!h[c]) b.free += std::string(b.free.empty() ? "" : ", ") + "xyz"[c];
+    out.push_back(b);
   }
+  return out;
+}
+
+void check_bodies_supported(const model::Model& model, const assembly::DofMap& dofs) {
+  const auto free = unsupported_bodies(model, dofs, true);
+  if (free.empty()) return;
+  throw SolverError("the body containing node " + std::to_string(free.front().node) +
+                    " has no displacement boundary condition in " + free.front().free +
+                    ": it can move as a rigid body (add *BOUNDARY constraints)");
+}
+
+std::string bodies_held_only_by_contact(const model::Model& model, const assembly::DofMap& dofs) {
+  std::string out;
+  for (const auto& b : unsupported_bodies(model, dofs, false))
+    out += std::string(out.empty() ? "" : "; ") + "the body containing node " +
+           std::to_string(b.node) + " is held in " + b.free + " only by contact";
+  return out;
 }
 
 }  // namespace kontakt::analysis

@@ -55,6 +55,9 @@ void solve(const model::Model& model, const RunRequest& request, ResultWriters& 
       analysis::NonlinearOptions options;
       options.threads = request.threads;
       options.cancel = &cancel;
+      options.contact_stabilisation =
+          contact_stabilisation_from_name(request.contact_stabilisation)
+              .value_or(analysis::ContactStabilisation::Auto);
       analysis::run_nonlinear_static(model, options, writers, events);
     } else {
       analysis::run_linear_static(model, {.threads = request.threads, .cancel = &cancel}, writers,
@@ -71,6 +74,15 @@ void solve(const model::Model& model, const RunRequest& request, ResultWriters& 
 }
 
 }  // namespace
+
+std::optional<analysis::ContactStabilisation> contact_stabilisation_from_name(
+    const std::string& name) {
+  using analysis::ContactStabilisation;
+  if (name == "auto") return ContactStabilisation::Auto;
+  if (name == "always") return ContactStabilisation::Always;
+  if (name == "never") return ContactStabilisation::Never;
+  return std::nullopt;
+}
 
 int exit_code_for(RunStatus status) {
   switch (status) {

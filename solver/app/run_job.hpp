@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/events.hpp"
+#include "analysis/nonlinear_static.hpp"
 
 namespace kontakt::app {
 
@@ -21,6 +22,8 @@ struct RunRequest {
   int threads = 0;                ///< 0 = all cores
   /// Contact scheme for every contact pair (overrides the deck's SCHEME= and type default).
   std::optional<std::string> scheme;
+  /// Contact stabilisation: "auto" (default), "always" or "never".
+  std::string contact_stabilisation = "auto";
 };
 
 enum class RunStatus { Converged, NotConverged, InputError, Cancelled, Error };
@@ -47,6 +50,10 @@ struct DeckCheck {
   double total_time = 0;    ///< sum of the step periods: the denominator of progress
   std::vector<std::string> warnings;
 };
+
+/// The contact stabilisation modes by name; nullopt for an unknown one.
+std::optional<analysis::ContactStabilisation> contact_stabilisation_from_name(
+    const std::string& name);
 
 /// Exit codes of `kontakt solve` (README): 0 converged, 2 input error, 3 not converged or
 /// cancelled, 4 numerical or internal error.

@@ -28,6 +28,7 @@ struct SolveArgs {
   int threads = 0;
   bool quiet = false;
   std::optional<std::string> scheme;
+  std::string contact_stabilisation = "auto";
 };
 
 /// Parses `solve` arguments; returns false (after printing why) on a usage error.
@@ -64,6 +65,14 @@ bool parse_solve_args(int argc, char** argv, SolveArgs& args) {
         return false;
       }
       args.scheme = v;
+    } else if (a == "--contact-stabilisation") {
+      const char* v = value("--contact-stabilisation");
+      if (!v) return false;
+      if (!contact_stabilisation_from_name(v)) {
+        std::fprintf(stderr, "kontakt: --contact-stabilisation takes auto, always or never\n");
+        return false;
+      }
+      args.contact_stabilisation = v;
     } else if (a == "--quiet" || a == "-q") {
       args.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -96,7 +105,8 @@ int solve_command(int argc, char** argv) {
                                      .out_dir = args.out_dir,
                                      .job_name = args.deck.stem().string(),
                                      .threads = args.threads,
-                                     .scheme = args.scheme},
+                                     .scheme = args.scheme,
+                                     .contact_stabilisation = args.contact_stabilisation},
                                     progress, g_cancel);
   if (result.status != RunStatus::Converged)
     std::fprintf(stderr, "kontakt: error: %s\n", result.message.c_str());

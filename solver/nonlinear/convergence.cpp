@@ -105,7 +105,10 @@ Verdict Convergence::check(int iteration, const IterationMeasures& m) {
   counts_.push_back(m.contact_elements);
   const bool changed = contact_changed(counts_[counts_.size() - 2], m.contact_elements);
   changed_.push_back(changed);
-  if (changed && contact_ == ContactCriteria::NodeToSurface) {
+  // ccx extends the clocks for node-to-face changes, which its frozen pairing confines to the
+  // first 8 iterations; later changes (feet sliding off their faces) still block convergence
+  // but no longer extend the iteration cap, so a chattering contact set ends in a cutback.
+  if (changed && contact_ == ContactCriteria::NodeToSurface && iteration <= kRepairingIterations) {
     divergence_from_ = std::max(divergence_from_, iteration + 4);
     estimate_from_ = std::max(estimate_from_, iteration + 8);
     ++max_iterations_;

@@ -35,6 +35,10 @@ enum class ContactCriteria {
   SurfaceToSurface
 };
 
+/// Node-to-face contact re-pairs in iterations 2 to 8 of an increment (ccx: iit <= 8), then
+/// freezes its pairing.
+inline constexpr int kRepairingIterations = 8;
+
 struct Verdict {
   enum class Kind { Converged, Iterate, Cutback };
   Kind kind = Kind::Iterate;

@@ -59,17 +59,18 @@ std::vector<output::ContactPointRecord> committed_points(const ContactSystem& sy
 
 class EveryScheme : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(EveryScheme, AssembledTangentMatchesFiniteDifferences) {
+void check_tangent_by_finite_differences(const char* scheme_name, Real stabilisation) {
   fixtures::TwoBlocks t;
   t.lower = {"C3D8", 3, 1};
   t.upper = {"C3D20", 2, 1};
   t.upper_size = 0.7;
   t.rotation_deg = 17;
   t.offset_x = 0.05;
-  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(GetParam()));
+  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(scheme_name));
   ContactSystem sys(m);
   const VecX u = pressed(m, 2e-3, 3);
-  sys.begin_increment(u, {.step = 2}, 1);
+  sys.begin_increment(0.5 * u, {.step = 2}, 1);
+  sys.set_stabilisation(stabilisation);
   VecX f0;
   MatX K;
   // Evaluations past the re-pairing window (8): the pairing stays fixed, so the residual is a
@@ -93,6 +94,14 @@ TEST_P(EveryScheme, AssembledTangentMatchesFiniteDifferences) {
   }
   EXPECT_GT(checked, 50);
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-10 * scale);
+}
+
+TEST_P(EveryScheme, AssembledTangentMatchesFiniteDifferences) {
+  check_tangent_by_finite_differences(GetParam(), 0);
+}
+
+TEST_P(EveryScheme, AssembledTangentWithStabilisationSpringsMatchesFiniteDifferences) {
+  check_tangent_by_finite_differences(GetParam(), 0.3);
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactSystem, EveryScheme,
@@ -162,6 +171,49 @@ TEST(ContactSystem, InitialOverlapIsRampedOutOverStepOne) {
   sys.update(u, 1);
   sys.commit();
   for (const auto& r : committed_points(sys, u)) EXPECT_NEAR(r.clearance, -1e-3, 1e-12);
+}
+
+TEST(ContactSystem, StabilisationSpringsActOnTheChangeOfTheGapSinceTheIncrementStarted) {
+  // Upper block 0.01 above the lower one: no contact. Moved down by 0.004 within the
+  // increment, every paired point's spring (factor * K per unit area) is stretched by 0.004:
+  // energy 1/2 f K A 0.004^2 over the slave area A, force f K A 0.004, all of it carried by
+  // the springs. Moved back to where the increment started, the springs are slack.
+  for (const char* name : {"lgc7", "gc7", "nts"}) {
+    fixtures::TwoBlocks t;
+    t.gap = 0.01;
+    model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
+    ContactSystem sys(m);
+    const VecX u0 = VecX::Zero(3 * m.n_nodes());
+    VecX u = u0;
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -0.004;
+    sys.begin_increment(u0, {.step = 2}, 1);
+    sys.set_stabilisation(1e-2);
+    sys.update(u, 1);
+    EXPECT_EQ(sys.n_active(), 0) << name;
+    const Real area = t.upper_size * t.upper_size, k = 1e-2 * 1e5;
+    EXPECT_NEAR(sys.stabilisation_energy(), 0.5 * k * area * 0.004 * 0.004, 1e-9) << name;
+    EXPECT_EQ(sys.stabilisation_share(), 1);
+    VecX f;
+    assembled(sys, u, f, nullptr);
+    Real fz = 0;
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) fz += f(3 * n + 2);
+    EXPECT_NEAR(fz, -k * area * 0.004, 1e-9) << name;  // internal force: the springs pull back
+    // 0.006 of the gap is left: the springs that move the block 1.2 * 0.006 further under the
+    // same load are 0.004 / (0.004 + 0.0072) as stiff.
+    ASSERT_TRUE(sys.approach_ratio().has_value()) << name;
+    EXPECT_NEAR(*sys.approach_ratio(), 0.004 / (0.004 + 1.2 * 0.006), 1e-9) << name;
+    EXPECT_FALSE(sys.separating()) << name;
+    sys.update(-u, 1);  // moved up instead: the loads pull the bodies apart
+    EXPECT_TRUE(sys.separating()) << name;
+    EXPECT_FALSE(sys.approach_ratio().has_value()) << name;
+    sys.update(u0, 1);
+    EXPECT_NEAR(sys.stabilisation_energy(), 0, 1e-15) << name;
+    sys.set_stabilisation(0);
+    sys.update(u, 1);
+    EXPECT_EQ(sys.stabilisation_energy(), 0) << name;
+  }
 }
 
 TEST(ContactSystem, OutputShowsTheCommittedStateAndRollBackDropsTheTrial) {

@@ -88,6 +88,24 @@ TEST(Convergence, NodeToSurfaceChangesRestartTheDivergenceClock) {
   EXPECT_EQ(conv.check(7, measures(100, 15, 1, 6)).kind, Kind::Cutback);
 }
 
+TEST(Convergence, NodeToSurfaceChangesAfterTheRepairingIterationsDoNotExtendTheCap) {
+  // A contact count that keeps changing blocks convergence; past iteration 8 (when ccx's
+  // pairing is frozen) the changes no longer add iterations, so the cap I_C = 16 plus the
+  // eight extensions of iterations 1-8 ends the increment.
+  model::SolutionControls c;
+  Convergence conv(c, 0);
+  conv.set_contact_criteria(ContactCriteria::NodeToSurface, 1e-3);
+  conv.begin_increment(10);
+  Kind kind = Kind::Iterate;
+  int it = 0;
+  while (kind == Kind::Iterate && it < 1000) {
+    ++it;
+    kind = conv.check(it, measures(100, it % 2 ? 1 : 2, 1e-3, 10 + it % 2)).kind;
+  }
+  EXPECT_EQ(kind, Kind::Cutback);
+  EXPECT_EQ(it, c.max_iterations + 8);
+}
+
 TEST(Convergence, SurfaceToSurfaceAllowsOnePerMilleChange) {
   Convergence conv({}, 0);
   conv.set_contact_criteria(ContactCriteria::SurfaceToSurface, 1e-3);

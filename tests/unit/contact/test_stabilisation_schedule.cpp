@@ -1,0 +1,81 @@
+// The contact stabilisation's continuation: while nothing touches, the springs weaken just
+// enough to land the bodies on contact; then they step down by 10 until contact carries the
+// load and are released; a failed release goes back one level further down, and springs that
+// carry a negligible share count as released; what the release removed is reported.
+#include <gtest/gtest.h>
+
+#include "contact/stabilisation_schedule.hpp"
+
+using namespace kontakt;
+using namespace kontakt::contact;
+using Next = StabilisationSchedule::Next;
+using S = StabilisationSchedule;
+
+TEST(StabilisationSchedule, OffUntilEngaged) {
+  S s;
+  EXPECT_FALSE(s.engaged());
+  EXPECT_EQ(s.factor(), 0);
+  EXPECT_EQ(s.converged(1, 1, std::nullopt), Next::Done);  // unstabilised: just converged
+  EXPECT_EQ(s.absorbed_energy(), 0);
+}
+
+TEST(StabilisationSchedule, LandsOnContactThenStepsDownUntilContactCarriesTheLoad) {
+  S s;
+  s.engage();
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2);
+  // Nothing touches: the ratio that lands the bodies on contact, within its bounds.
+  EXPECT_EQ(s.converged(5.0, 1.0, 0.02), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 2e-4);
+  EXPECT_EQ(s.converged(5.0, 1.0, 1e-6), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 2e-4 * S::kMinApproachRatio);
+  EXPECT_EQ(s.converged(5.0, 1.0, 0.9), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 2e-7 * S::kMaxApproachRatio);
+  // Touching: steps of 10 until contact carries 99 %, then the release.
+  EXPECT_EQ(s.converged(2.0, 0.2, std::nullopt), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-8);
+  EXPECT_FALSE(s.releasing());
+  EXPECT_EQ(s.converged(0.3, 0.005, std::nullopt), Next::Continue);
+  EXPECT_TRUE(s.releasing());
+  EXPECT_EQ(s.factor(), 0);
+  EXPECT_EQ(s.converged(0, 0, std::nullopt), Next::Done);
+  EXPECT_DOUBLE_EQ(s.absorbed_energy(), 0.3);  // what the springs held when released
+}
+
+TEST(StabilisationSchedule, AFailedReleaseGoesBackAndStepsDownToNegligibleSprings) {
+  S s;
+  s.engage();
+  s.converged(1.0, 0.001, std::nullopt);  // released after the first level
+  ASSERT_TRUE(s.releasing());
+  EXPECT_EQ(s.failed(), Next::RestoreAndContinue);
+  EXPECT_FALSE(s.releasing());
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-3);
+  // No second release: the levels go on down until the springs' share is negligible.
+  EXPECT_EQ(s.converged(0.1, 1e-4, std::nullopt), Next::Continue);
+  EXPECT_FALSE(s.releasing());
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-4);
+  EXPECT_EQ(s.converged(0.01, 0.5 * S::kNegligibleShare, std::nullopt), Next::Done);
+  EXPECT_DOUBLE_EQ(s.absorbed_energy(), 0.01);
+}
+
+TEST(StabilisationSchedule, GivesUpWhenAStabilisedLevelFailsOrTheSpringsGetTooWeak) {
+  S s;
+  s.engage();
+  EXPECT_EQ(s.failed(), Next::GiveUp);  // the springs themselves do not converge
+  s.engage();
+  int levels = 0;
+  while (s.converged(1, 1, std::nullopt) == Next::Continue) ++levels;
+  EXPECT_EQ(levels, 7);  // 1e-2 ... 1e-9: weaker springs no longer hold a body numerically
+  EXPECT_GE(s.factor(), S::kMinFactor);
+}
+
+TEST(StabilisationSchedule, EngagingAgainStartsOverAndDisengagingSwitchesOff) {
+  S s;
+  s.engage();
+  s.converged(1, 1, std::nullopt);
+  s.engage();
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2);
+  EXPECT_EQ(s.absorbed_energy(), 0);
+  s.disengage();
+  EXPECT_FALSE(s.engaged());
+  EXPECT_EQ(s.factor(), 0);
+}
