@@ -20,6 +20,8 @@ namespace {
 /// (ccx: iterations up to 8), so the active set can settle.
 constexpr int kRepairEvaluations = nonlinear::kRepairingIterations;
 constexpr Real kNoClearanceLimit = std::numeric_limits<Real>::infinity();
+/// The broad phase looks this many of a slave face's (node's faces') sizes around it.
+constexpr Real kCandidateMargin = 2;
 
 /// ccx's nodal weights of a slave face's area for node-to-surface contact: the consistent
 /// weights for linear faces, positive substitutes for quadratic ones (negative corner weights
@@ -134,20 +136,27 @@ Real ContactSystem::point_area(const Unit& unit, const Point& pt, const UnitGeom
   return nodal_area(pairs_[unit.pair], unit.node, u);
 }
 
-void ContactSystem::find_candidates(Unit& unit, const VecX& u, const std::vector<AabbTree>& trees,
-                                    const std::vector<Real>& margins) const {
+void ContactSystem::find_candidates(Unit& unit, const VecX& u,
+                                    const std::vector<AabbTree>& trees) const {
   const Pair& pair = pairs_[unit.pair];
   Box box;
   Vec3 slave_normal = Vec3::Zero();
+  Real size = 0;
   if (unit.node >= 0) {
     box.add(model_.mesh.coords.row(unit.node).transpose() + u.segment<3>(3 * unit.node));
+    for (const auto& [f, local] : pair.node_faces[unit.node])
+      size = std::max(size, face_size(face_geometry(pair.area_faces[f], model_.mesh.coords, u)));
   } else {
     const FaceGeometry f = face_geometry(pair.slave.faces[unit.face], model_.mesh.coords, u);
     box = face_box(f);
+    size = face_size(f);
     slave_normal = surface_point(f, face_centre(f.topo)).normal;
   }
+  // Master faces within twice the unit's own size: whatever can touch it within the increment
+  // (gaps up to 1 % of a body 200 elements across), and no more, however coarse the surfaces
+  // are elsewhere.
   unit.candidates.clear();
-  for (int m : trees[unit.pair].overlapping(box.inflated(margins[unit.pair]))) {
+  for (int m : trees[unit.pair].overlapping(box.inflated(kCandidateMargin * size))) {
     if (unit.node < 0) {
       // Surface-to-surface: only master faces facing the slave face.
       const FaceGeometry mf = face_geometry(pair.master.faces[m], model_.mesh.coords, u);
@@ -246,24 +255,17 @@ void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, 
   evaluations_ = 0;
   repair_once_ = false;
   stabilisation_ = 0;  // springs belong to one increment
-  // Broad phase: one tree over each pair's master faces; candidates within one face size.
+  // Broad phase: one tree over each pair's master faces.
   std::vector<AabbTree> trees;
-  std::vector<Real> margins;
   for (const Pair& pair : pairs_) {
     std::vector<Box> boxes;
-    Real size = 0;
-    for (const auto& f : pair.master.faces) {
-      const FaceGeometry g = face_geometry(f, model_.mesh.coords, u);
-      boxes.push_back(face_box(g));
-      size = std::max(size, face_size(g));
-    }
-    for (const auto& f : pair.slave.faces) size = std::max(size, face_size(face_geometry(f, model_.mesh.coords, u)));
+    for (const auto& f : pair.master.faces)
+      boxes.push_back(face_box(face_geometry(f, model_.mesh.coords, u)));
     trees.emplace_back(boxes);
-    margins.push_back(size);
   }
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      find_candidates(units_[k], u, trees, margins);
+      find_candidates(units_[k], u, trees);
       build_points(units_[k], u);
     }
   });

@@ -209,8 +209,7 @@ class ContactSystem {
   Real gap_offset(const Point& pt) const {
     return -pt.overlap0 * (1 - ctx_.fraction_end) - pt.closure;
   }
-  void find_candidates(Unit& unit, const VecX& u, const std::vector<AabbTree>& trees,
-                       const std::vector<Real>& margins) const;
+  void find_candidates(Unit& unit, const VecX& u, const std::vector<AabbTree>& trees) const;
   void build_points(Unit& unit, const VecX& u) const;
   Pairing pair_point(const Unit& unit, const UnitGeometry& g, const Point& pt,
                      const VecX& u) const;

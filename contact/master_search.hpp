@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "contact/aabb_tree.hpp"
 #include "contact/closest_point.hpp"
 
 namespace kontakt::contact {
@@ -22,6 +23,9 @@ struct MasterFoot {
 inline constexpr Real kInsideTolerance = 1e-3;
 inline constexpr Real kEdgeTolerance = 0.05;
 
+/// The nearest candidate `p` projects into. Candidates are visited by the distance from `p`
+/// to their bounding boxes, and the search stops at the first box farther than the best foot
+/// found (a foot lies in its face's box): only the faces near the point are projected on.
 MasterFoot find_master(const Vec3& p, std::span<const FaceGeometry* const> candidates);
 
 }  // namespace kontakt::contact

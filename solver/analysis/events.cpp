@@ -45,6 +45,11 @@ std::string to_json_line(const Event& e) {
     j["summary"] = {{"iterations", e.iterations},
                     {"max_displacement", e.max_displacement},
                     {"max_mises", e.max_mises}};
+    const PhaseTimes& t = e.times;
+    if (t.elements > 0)
+      j["summary"]["times"] = {{"contact_search", t.contact_search}, {"pattern", t.pattern},
+                               {"elements", t.elements}, {"contact", t.contact},
+                               {"factorisation", t.factorisation}, {"solve", t.solve}};
     if (e.has_contact) {
       j["summary"]["max_contact_pressure"] = e.max_contact_pressure;
       j["summary"]["total_contact_force"] = e.total_contact_force;

@@ -7,6 +7,16 @@
 
 namespace kontakt::analysis {
 
+/// Where a run's wall time went, in seconds (the rest: output, loads, bookkeeping).
+struct PhaseTimes {
+  Real contact_search = 0;  ///< contact points and pairing at the start of increments
+  Real pattern = 0;         ///< sparsity pattern and symbolic factorisation for contact groups
+  Real elements = 0;        ///< element tangents and forces, assembled
+  Real contact = 0;         ///< contact forces and tangents per evaluation
+  Real factorisation = 0;
+  Real solve = 0;           ///< triangular solves with refinement
+};
+
 /// One event; fields that do not apply to a kind stay at their defaults and are not written.
 struct Event {
   enum class Kind { Step, Increment, Iteration, Cutback, Output, Warning, Done, Error };
@@ -29,6 +39,7 @@ struct Event {
   bool has_contact = false;             ///< the contact figures below apply
   Real max_contact_pressure = 0, total_contact_force = 0;
   int drift_redos = 0;                  ///< increments redone because frozen projections drifted
+  PhaseTimes times{};                   ///< nonlinear runs
 };
 
 class EventSink {

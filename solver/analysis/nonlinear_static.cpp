@@ -93,6 +93,18 @@ class NonlinearStatic {
 
   Real wall() const { return std::chrono::duration<Real>(Clock::now() - t0_).count(); }
 
+  /// Runs `fn`, adding its wall time to `total`.
+  template <class Fn>
+  static auto timed(Real& total, Fn&& fn) {
+    const auto start = Clock::now();
+    struct Add {
+      Real& total;
+      Clock::time_point start;
+      ~Add() { total += std::chrono::duration<Real>(Clock::now() - start).count(); }
+    } add{total, start};
+    return fn();
+  }
+
   void run_step(int s) {
     const model::Step& step = model_.steps[s];
     StepContext sc{.step = &step, .previous = s > 0 ? &model_.steps[s - 1] : nullptr,
@@ -146,10 +158,12 @@ class NonlinearStatic {
   Evaluation evaluate(const StepContext& sc, const Attempt& a, const VecX& u,
                       const VecX& prescribed_step) {
     const assembly::AssemblyPlan& plan = layout_.plan();
-    Evaluation ev = evaluate_elements(model_, plan, sc.step->nlgeom, elements_, u, a.dT,
-                                      prescribed_step, element_cache_, threads_);
+    Evaluation ev = timed(times_.elements, [&] {
+      return evaluate_elements(model_, plan, sc.step->nlgeom, elements_, u, a.dT,
+                               prescribed_step, element_cache_, threads_);
+    });
     if (!contact_.empty()) {
-      contact_.update(u, threads_);
+      timed(times_.contact, [&] { contact_.update(u, threads_); });
       const contact::ForceMeasure f =
           contact_.add_to(plan, prescribed_step, ev.system, ev.internal_force);
       ev.force_abs_sum += f.abs_sum;
@@ -178,11 +192,13 @@ class NonlinearStatic {
     for (int k = 0; k < dofs.n_prescribed(); ++k) a.g_old[k] = u_predicted[dofs.prescribed_dof(k)];
     a.u = dofs.expand(a.x, a.g_old);
     if (!contact_.empty()) {
-      contact_.begin_increment(u_,  // pairings at the converged state, not the prediction
-                               {.step = sc.number, .increment = increments_->increment_number(),
-                                .fraction_start = a.t_old / sc.period, .fraction_end = a.ramp},
-                               threads_);
-      layout_.set_contact_groups(contact_.groups(), *solver_, threads_);
+      timed(times_.contact_search, [&] {
+        contact_.begin_increment(u_,  // pairings at the converged state, not the prediction
+                                 {.step = sc.number, .increment = increments_->increment_number(),
+                                  .fraction_start = a.t_old / sc.period, .fraction_end = a.ramp},
+                                 threads_);
+      });
+      timed(times_.pattern, [&] { layout_.set_contact_groups(contact_.groups(), *solver_, threads_); });
     }
     return a;
   }
@@ -312,8 +328,10 @@ class NonlinearStatic {
     const assembly::DofMap& dofs = layout_.dofs();
     const assembly::AssemblyPlan& plan = layout_.plan();
     linsolve::SpdSolveReport report;
-    spd_.factorise(plan.pattern, a.ev.system.values, report);
-    const VecX dx = spd_.solve(plan.pattern, a.ev.system.values, a.ev.system.rhs, report);
+    timed(times_.factorisation, [&] { spd_.factorise(plan.pattern, a.ev.system.values, report); });
+    const VecX dx = timed(times_.solve, [&] {
+      return spd_.solve(plan.pattern, a.ev.system.values, a.ev.system.rhs, report);
+    });
     if (report.stabilised && !warned_zero_energy_mode_) {
       warned_zero_energy_mode_ = true;
       const std::string held =
@@ -419,7 +437,8 @@ class NonlinearStatic {
                       .increment = increments_->increment_number(),
                       .attempt = increments_->attempt(), .iteration = it, .step_time = a.t_old,
                       .total_time = total_time_start_ + a.t_old, .dt = increments_->increment(),
-                      .wall_time = wall(), .message = verdict.reason});
+                      .contact_elements = contact_count(), .wall_time = wall(),
+                      .message = verdict.reason});
     increments_->cut_back(verdict.cutback_factor, verdict.reason);
   }
 
@@ -452,6 +471,7 @@ class NonlinearStatic {
     done.max_contact_pressure = max_contact_pressure_;
     done.total_contact_force = total_contact_force_;
     done.drift_redos = drift_redos_;
+    done.times = times_;
     events_.on_event(done);
   }
 
@@ -483,6 +503,7 @@ class NonlinearStatic {
   bool warned_zero_energy_mode_ = false;
 
   // Figures for the done event
+  PhaseTimes times_;
   int total_iterations_ = 0, drift_redos_ = 0;
   Real step_stabilisation_energy_ = 0;
   Real max_mises_ = 0, max_contact_pressure_ = 0, total_contact_force_ = 0;

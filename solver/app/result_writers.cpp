@@ -1,5 +1,7 @@
 #include "app/result_writers.hpp"
 
+#include <limits>
+
 namespace kontakt::app {
 
 ResultWriters::ResultWriters(const model::Model& model, const std::filesystem::path& dir,
@@ -22,7 +24,13 @@ void ResultWriters::on_event(const analysis::Event& e) {
                        .total_time = e.total_time,
                        .step_time = e.step_time,
                        .dt = e.dt,
-                       .converged = e.kind == Kind::Increment});
+                       .converged = e.kind == Kind::Increment,
+                       .stabilisation_energy = e.stabilisation_energy >= 0
+                                                   ? e.stabilisation_energy
+                                                   : std::numeric_limits<Real>::quiet_NaN(),
+                       .strain_energy = e.strain_energy >= 0
+                                            ? e.strain_energy
+                                            : std::numeric_limits<Real>::quiet_NaN()});
 }
 
 void ResultWriters::finish() { hdf5_.finish(); }

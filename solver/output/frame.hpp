@@ -1,6 +1,8 @@
 // One converged output state of the model: what the writers (.dat, HDF5) consume.
 #pragma once
 
+#include <limits>
+
 #include <vector>
 
 #include "core/types.hpp"
@@ -70,6 +72,10 @@ struct IncrementRecord {
   int step = 1, increment = 1, attempts = 1, iterations = 1;
   Real total_time = 0, step_time = 0, dt = 0;
   bool converged = true;
+  /// Models with contact, converged increments: the energy the contact stabilisation absorbed
+  /// and the strain energy at the increment's end; NaN otherwise.
+  Real stabilisation_energy = std::numeric_limits<Real>::quiet_NaN();
+  Real strain_energy = std::numeric_limits<Real>::quiet_NaN();
 };
 
 }  // namespace kontakt::output

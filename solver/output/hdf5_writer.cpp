@@ -222,6 +222,7 @@ struct HistoryRow {
   std::int64_t step, increment, attempts, iterations;
   double total_time, step_time, dt;
   std::int8_t converged;
+  double stabilisation_energy, strain_energy;
 };
 
 }  // namespace
@@ -461,10 +462,15 @@ void Hdf5Writer::finish() {
     check(H5Tinsert(t, "step_time", HOFFSET(HistoryRow, step_time), H5T_NATIVE_DOUBLE), "insert");
     check(H5Tinsert(t, "dt", HOFFSET(HistoryRow, dt), H5T_NATIVE_DOUBLE), "insert");
     check(H5Tinsert(t, "converged", HOFFSET(HistoryRow, converged), H5T_NATIVE_INT8), "insert");
+    check(H5Tinsert(t, "stabilisation_energy", HOFFSET(HistoryRow, stabilisation_energy),
+                    H5T_NATIVE_DOUBLE), "insert");
+    check(H5Tinsert(t, "strain_energy", HOFFSET(HistoryRow, strain_energy), H5T_NATIVE_DOUBLE),
+          "insert");
     std::vector<HistoryRow> rows;
     for (const auto& r : history_)
       rows.push_back({r.step, r.increment, r.attempts, r.iterations, r.total_time, r.step_time,
-                      r.dt, static_cast<std::int8_t>(r.converged ? 1 : 0)});
+                      r.dt, static_cast<std::int8_t>(r.converged ? 1 : 0),
+                      r.stabilisation_energy, r.strain_energy});
     write_dataset(h, "increments", t, t, {rows.size()}, rows.data());
   }
   {

@@ -196,7 +196,7 @@ class Checker:
         h = self.dataset(f, "history/increments", None) if False else f.get("history/increments")
         if self.check(h is not None, "missing /history/increments"):
             want = {"step", "increment", "attempts", "iterations", "total_time", "step_time", "dt",
-                    "converged"}
+                    "converged", "stabilisation_energy", "strain_energy"}
             self.check(set(h.dtype.names or ()) == want, f"/history/increments fields {h.dtype.names}")
 
 

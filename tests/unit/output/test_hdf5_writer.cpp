@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <hdf5.h>
 #include <unistd.h>
 
@@ -221,7 +223,7 @@ TEST(Hdf5Writer, Structure) {
   {
     Hdf5Writer w(m, dir, "model", {"U", "RF", "S", "E", "ENER", "EVOL"});
     w.write(frame_for(m, 1, 0.5));
-    w.add_increment({1, 1, 1, 3, 0.5, 0.5, 0.5, true});
+    w.add_increment({1, 1, 1, 3, 0.5, 0.5, 0.5, true, 0.25, 3.5});
     w.write(frame_for(m, 2, 1.0));
     w.add_increment({1, 2, 2, 4, 1.0, 1.0, 0.5, false});
     EXPECT_EQ(w.frames_written(), 2);
@@ -334,21 +336,27 @@ TEST(Hdf5Writer, Structure) {
     hid_t d = H5Dopen2(f, "/history/increments", H5P_DEFAULT);
     hid_t t = H5Dget_type(d);
     EXPECT_EQ(H5Tget_class(t), H5T_COMPOUND);
-    EXPECT_EQ(H5Tget_nmembers(t), 8);
+    EXPECT_EQ(H5Tget_nmembers(t), 10);
     EXPECT_GE(H5Tget_member_index(t, "attempts"), 0);
     EXPECT_GE(H5Tget_member_index(t, "dt"), 0);
     struct Row {
       std::int64_t attempts;
       std::int8_t converged;
+      double stabilisation_energy, strain_energy;
     };
     hid_t mt = H5Tcreate(H5T_COMPOUND, sizeof(Row));
     H5Tinsert(mt, "attempts", HOFFSET(Row, attempts), H5T_NATIVE_INT64);
     H5Tinsert(mt, "converged", HOFFSET(Row, converged), H5T_NATIVE_INT8);
+    H5Tinsert(mt, "stabilisation_energy", HOFFSET(Row, stabilisation_energy), H5T_NATIVE_DOUBLE);
+    H5Tinsert(mt, "strain_energy", HOFFSET(Row, strain_energy), H5T_NATIVE_DOUBLE);
     Row rows[2];
     H5Dread(d, mt, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows);
     EXPECT_EQ(rows[1].attempts, 2);
     EXPECT_EQ(rows[0].converged, 1);
     EXPECT_EQ(rows[1].converged, 0);
+    EXPECT_EQ(rows[0].stabilisation_energy, 0.25);
+    EXPECT_EQ(rows[0].strain_energy, 3.5);
+    EXPECT_TRUE(std::isnan(rows[1].strain_energy));  // a cut-back attempt has none
     H5Tclose(mt);
     H5Tclose(t);
     H5Dclose(d);
