@@ -1,6 +1,7 @@
 // uPlot charts of the dashboard: a factory with the options every chart shares (width follows
 // its box, log or linear y, synced cursors, vertical markers), and the points counter the
 // browser tests and the render benchmark read.
+import { fmt_log_tick, fmt_tick, is_decade } from "./axis_format.js";
 import uPlot from "./uPlot.esm.js";
 
 const HEIGHT = 260;
@@ -62,7 +63,7 @@ export function make_chart(box, { x, y, series, markers, sync, on_first_draw }) 
   };
   const x_scale = { time: false };
   if (x.categories) x_scale.distr = 2;
-  const y_axis = { label: y.label, size: 64 };
+  const y_axis = { label: y.label, size: 64, values: (u, splits) => splits.map(fmt_tick) };
   if (y.log) {
     // Over more than a decade, labels and grid at the decades only: the 2..9 lines would
     // grey the plot out.
@@ -101,19 +102,6 @@ export function make_chart(box, { x, y, series, markers, sync, on_first_draw }) 
     if (box.clientWidth && box.clientWidth !== u.width) u.setSize({ width: box.clientWidth, height: HEIGHT });
   }).observe(box);
   return u;
-}
-
-function is_decade(v) {
-  const e = Math.log10(v);
-  return Math.abs(e - Math.round(e)) < 1e-9;
-}
-
-/** 1e-7, 0.01, 0.1, 1, 10, 100, 1e4; 0.3, 2e-5 between decades */
-function fmt_log_tick(v) {
-  const e = Math.floor(Math.log10(v) + 1e-9);
-  if (e >= -2 && e <= 3) return String(Number(v.toPrecision(2)));
-  const m = Number((v / 10 ** e).toPrecision(2));
-  return m === 1 ? `1e${e}` : `${m}e${e}`;
 }
 
 function fmt_value(v) {

@@ -20,12 +20,13 @@ function extras(e) {
     .map(([k, v]) => ` ${k} ${fmt_number(v)}`).join("");
 }
 
+const SUMMARY_PARTS = [["max_displacement", "max |U|"], ["max_mises", "max Mises"],
+  ["max_contact_pressure", "max CPRESS"], ["total_contact_force", "contact force"]];
+
 function summary_text(s) {
   if (!s) return "";
-  const parts = [`${s.iterations} iterations`, `max |U| ${fmt_number(s.max_displacement)}`,
-                 `max Mises ${fmt_number(s.max_mises)}`];
-  if (s.max_contact_pressure !== undefined) parts.push(`max CPRESS ${fmt_number(s.max_contact_pressure)}`);
-  if (s.total_contact_force !== undefined) parts.push(`contact force ${fmt_number(s.total_contact_force)}`);
+  const parts = [`${s.iterations} iterations`];
+  for (const [k, name] of SUMMARY_PARTS) if (typeof s[k] === "number") parts.push(`${name} ${fmt_number(s[k])}`);
   if (s.drift_redos) parts.push(`${s.drift_redos} drift redos`);
   return ": " + parts.join(", ");
 }

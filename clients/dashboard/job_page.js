@@ -4,6 +4,7 @@
 // dropped connection with Last-Event-ID. Redraws are batched, at most five a second.
 import { ApiError, download_with_token, get_json, post_json } from "./api.js";
 import { stored_token } from "./auth.js";
+import { prefers_log } from "./axis_format.js";
 import { COLORS, make_chart, show_data } from "./charts.js";
 import { el, fill, label_chips, status_chip } from "./dom.js";
 import { EventLog } from "./event_log.js";
@@ -210,8 +211,9 @@ function draw_extra(name, column) {
   if (!chart) {
     document.getElementById("extra-card").hidden = false;
     const box = el("div", { class: "plot", "data-field": name });
-    document.getElementById("plot-extra").append(el("h3", {}, name), box);
-    chart = { box, u: make_chart(box, { x: iteration_x(), y: { label: name }, series: [{ label: name }],
+    document.getElementById("plot-extra").append(el("div", {}, el("h3", {}, name), box));
+    chart = { box, u: make_chart(box, { x: iteration_x(), y: { label: name, log: prefers_log(column) },
+                                        series: [{ label: name, span_gaps: true }],
                                         markers: () => runs.markers, sync: "it" }) };
     charts.extra.set(name, chart);
   }
@@ -291,9 +293,22 @@ async function main() {
     show_error(`"${id}" is not a job id`);
     return;
   }
+  // The stream opens at once, beside the job document: the plots need not wait for it.
+  const stream = new EventStream(`/v1/jobs/${id}/events`, {
+    on_events(events) {
+      for (const e of events) runs.add(e);
+      log.add(events);
+      if (job && events.some((e) => e.event === "status")) refresh_job();
+      schedule_render();
+    },
+    on_state: on_stream_state,
+    is_last: (e) => e.event === "status" && TERMINAL.has(e.status),
+  });
+  const streaming = stream.run();
   try {
     job = await get_json(`/v1/jobs/${id}`);
   } catch (e) {
+    stream.close();
     show_error(e instanceof ApiError && e.status === 404 ? `There is no job ${id}.` : e.message);
     return;
   }
@@ -301,17 +316,7 @@ async function main() {
   setInterval(() => {
     if (!TERMINAL.has(job.status)) refresh_job(0);
   }, POLL_MS);
-  const stream = new EventStream(`/v1/jobs/${id}/events`, {
-    on_events(events) {
-      for (const e of events) runs.add(e);
-      log.add(events);
-      if (events.some((e) => e.event === "status")) refresh_job();
-      schedule_render();
-    },
-    on_state: on_stream_state,
-    is_last: (e) => e.event === "status" && TERMINAL.has(e.status),
-  });
-  stream.run();
+  await streaming;
 }
 
 main();

@@ -103,7 +103,7 @@ test("contact job page: plots hold every iteration, tables match the API", async
 
   const expected = (await table_rows(OPEN, contact_job.id, "increments"))
     .map((r) => [r.step, r.increment, r.attempt, r.iteration, r.converged].map(String));
-  const shown = await page.$$eval("#increments tbody tr", (rows) => rows.map((r) =>
+  const shown = await page.$$eval("#increments tbody tr[data-step]", (rows) => rows.map((r) =>
     [r.dataset.step, r.dataset.increment, r.dataset.attempt, r.dataset.iterations, r.dataset.converged]));
   assert.deepEqual(shown, expected);
   assert.ok(expected.some((r) => r[4] === "false"), "the Hertz run redoes an increment");
@@ -248,6 +248,47 @@ test("token: asked once, kept in session storage, never in a URL", async (t) => 
   expected_401();
   assert.ok(urls.length > 5);
   for (const url of urls) assert.ok(!url.includes(TOKEN) && !url.includes("access_token"), url);
+});
+
+test("fields the solver will add: stick/slip series and other numeric measures are plotted", async (t) => {
+  // The solver does not report friction yet: the page gets a job whose API answers are
+  // served by the test (playwright routes), the rest is the real page.
+  const id = "f".repeat(32);
+  const job = await api(OPEN, `/v1/jobs/${contact_job.id}`);
+  Object.assign(job, { id, name: "friction-preview", status: "succeeded" });
+  const n = 60;
+  const events = [{ event: "status", status: "running" }, { event: "step", step: 1 }];
+  for (let i = 1; i <= n; i += 1) {
+    const inc = Math.ceil(i / 4), it = ((i - 1) % 4) + 1;
+    events.push({ event: "iteration", step: 1, increment: inc, attempt: 1, iteration: it, step_time: inc / 15,
+                  total_time: inc / 15, dt: 1 / 15, residual: 10 ** (2 - it), correction: 10 ** (1 - it),
+                  contact_elements: 100 + i, stick: 60 + (i % 7), slip: 40 - (i % 7), stabilisation_energy: 1e-3 / i,
+                  wall_time: i / 10 });
+    if (it === 4) events.push({ event: "increment", step: 1, increment: inc, attempt: 1, iteration: 4,
+                                step_time: inc / 15, total_time: inc / 15, dt: 1 / 15, contact_elements: 100 + i, wall_time: i / 10 });
+  }
+  events.push({ event: "done", status: "converged", summary: { iterations: n } }, { event: "status", status: "succeeded" });
+  const body = events.map((e, i) => `id: ${i + 1}\nevent: ${e.event}\ndata: ${JSON.stringify({ ...e, seq: i + 1, run: 1 })}\n\n`).join("");
+  const page = await open_page(t);
+  const json = (data) => ({ status: 200, contentType: "application/json", body: JSON.stringify(data) });
+  await page.route(`**/v1/jobs/${id}`, (r) => r.fulfill(json(job)));
+  await page.route(`**/v1/jobs/${id}/events`, (r) => r.fulfill({ status: 200, contentType: "text/event-stream", body }));
+  await page.route(`**/v1/jobs/${id}/summary`, (r) => r.fulfill(json({ id, name: job.name, status: "succeeded", reason: null,
+    labels: {}, iterations: n, wall_time: 6, max_displacement: 1, max_mises: 2, max_contact_pressure: 3, total_contact_force: 4 })));
+  await page.route(`**/v1/jobs/${id}/results`, (r) => r.fulfill(json({ artifacts: [] })));
+  await page.goto(`${OPEN}/jobs/${id}`);
+  await page.waitForSelector("#job-header[data-history-loaded]");
+  assert.equal(await points(page, "#plot-residual"), n);
+  assert.equal(await points(page, "#plot-contact"), n);
+  assert.match(await page.textContent("#contact-title"), /stick, slip/);
+  const legend = await page.textContent("#plot-contact .u-legend");
+  assert.match(legend, /stick/);
+  assert.match(legend, /slip/);
+  assert.ok(await page.isVisible("#extra-card"));
+  assert.equal(await points(page, "#plot-extra [data-field=stabilisation_energy]"), n);
+  assert.equal(await page.locator("#plot-extra .plot").count(), 1, "only the unknown numeric field");
+  assert.match(await page.textContent("#log"), /stick 66 slip 34 stabilisation_energy/);
+  await shot(page, "job_friction_fields");
 });
 
 test("unknown job: a clear message, no crash", async (t) => {
