@@ -4,6 +4,7 @@ import { api_fetch } from "./api.js";
 import { parse_sse } from "./sse_parser.js";
 
 const RETRY_MS = [500, 1000, 2000, 5000, 10000];
+const SLICE = 1000;  // events handed to the page at a time
 
 export class EventStream {
   /**
@@ -64,20 +65,20 @@ export class EventStream {
       if (done) break;
       const { frames, rest } = parse_sse(buffer + value);
       buffer = rest;
-      const events = [];
-      for (const f of frames) {
-        this.last_id = f.id ?? this.last_id;
-        const event = JSON.parse(f.data);
-        events.push(event);
-        if (this.is_last(event)) this.ended = true;
-      }
-      if (events.length) {
+      // A replay arrives in chunks of thousands of events. Hand them over in slices and let
+      // timers (the page's redraws) run in between, so a long history draws as it arrives;
+      // back-to-back reads alone would resolve as microtasks and starve the timers.
+      for (let start = 0; start < frames.length; start += SLICE) {
+        const events = frames.slice(start, start + SLICE).map((f) => {
+          this.last_id = f.id ?? this.last_id;
+          const event = JSON.parse(f.data);
+          if (this.is_last(event)) this.ended = true;
+          return event;
+        });
         delivered = true;
         this.on_events(events);
+        await new Promise((resolve) => setTimeout(resolve, 0));
       }
-      // Buffered chunks resolve as microtasks back to back: let timers (the page's redraws)
-      // run between them, so a long replay draws as it arrives.
-      await new Promise((resolve) => setTimeout(resolve, 0));
     }
     return delivered;
   }

@@ -68,14 +68,19 @@ function update_row(job) {
   return row.tr;
 }
 
+let latest_load = 0;
+
 async function load() {
+  // A refresh still in flight when the reader pages on must not draw the old page over it.
+  const mine = ++latest_load;
   let page;
   try {
     page = await get_json(api_url(state));
   } catch (e) {
-    document.getElementById("page-info").textContent = e.message;
+    if (mine === latest_load) document.getElementById("page-info").textContent = e.message;
     return;
   }
+  if (mine !== latest_load) return;
   const tbody = document.querySelector("#jobs tbody");
   const shown = new Set(page.jobs.map((j) => j.id));
   for (const id of rows.keys()) if (!shown.has(id)) rows.delete(id);

@@ -89,11 +89,15 @@ function render_header() {
 }
 
 let refresh_timer = null;
+let latest_refresh = 0;
 function refresh_job(delay = 100) {
   clearTimeout(refresh_timer);
   refresh_timer = setTimeout(async () => {
+    const mine = ++latest_refresh;  // an older answer arriving late must not win
     try {
-      job = await get_json(`/v1/jobs/${id}`);
+      const fresh = await get_json(`/v1/jobs/${id}`);
+      if (mine !== latest_refresh) return;
+      job = fresh;
       render_header();
     } catch (e) {
       show_error(e.message);
@@ -259,8 +263,18 @@ function render() {
   log.flush();
 }
 
+let render_ms = 0;  // how long the last redraw took
+
+/** The first redraw at once; then at most every RENDER_MS, and rendering never takes more
+ *  than about a quarter of the time while a long history streams in. */
 function schedule_render() {
-  if (!render_timer) render_timer = setTimeout(render, drawn_version < 0 ? 0 : RENDER_MS);
+  if (render_timer) return;
+  const delay = drawn_version < 0 ? 0 : Math.max(RENDER_MS, 3 * render_ms);
+  render_timer = setTimeout(() => {
+    const start = performance.now();
+    render();
+    render_ms = performance.now() - start;
+  }, delay);
 }
 
 /** Notes for plots that stay empty once the stream has ended. */

@@ -29,7 +29,7 @@ TOKEN = "web-test-token-7f3a"
 def write_decks(folder):
     hertz.hertz("C3D8", level=1).write(os.path.join(folder, "hertz.inp"))
     with open(os.path.join(folder, "long.inp"), "w") as f:
-        f.write(decks.long_running(increments=2000, nx=20))
+        f.write(decks.long_running(increments=6000, nx=20))  # about a minute: canceled long before
     with open(os.path.join(folder, "tiny.inp"), "w") as f:
         f.write(decks.tiny())
     with open(os.path.join(folder, "beam.inp"), "w") as f:
