@@ -1,4 +1,4 @@
-// Axis choices and tick labels of the plots (pure; tested under node).
+// Axis choices, tick labels and legend values of the plots (pure; tested under node).
 
 export function is_decade(v) {
   const e = Math.log10(v);
@@ -30,4 +30,10 @@ export function prefers_log(column) {
     max = Math.max(max, v);
   }
   return max > 0 && max / min >= 100;
+}
+
+/** A value in a plot's legend: 4 significant digits, exponent form outside [1e-3, 1e5). */
+export function fmt_legend(v) {
+  const a = Math.abs(v);
+  return a !== 0 && (a >= 1e5 || a < 1e-3) ? v.toExponential(3) : String(Number(v.toPrecision(4)));
 }

@@ -1,7 +1,7 @@
 // uPlot charts of the dashboard: a factory with the options every chart shares (width follows
 // its box, log or linear y, synced cursors, vertical markers), and the points counter the
 // browser tests and the render benchmark read.
-import { fmt_log_tick, fmt_tick, is_decade } from "./axis_format.js";
+import { fmt_legend, fmt_log_tick, fmt_tick, is_decade } from "./axis_format.js";
 import uPlot from "./uPlot.esm.js";
 
 const HEIGHT = 260;
@@ -90,7 +90,7 @@ export function make_chart(box, { x, y, series, markers, sync, on_first_draw }) 
         width: s.points_only ? 0 : 1.5,
         paths: s.points_only ? () => null : undefined,
         points: s.points_only ? { show: true, size: 8, fill: s.stroke, stroke: s.stroke } : { size: s.point_size || 4 },
-        value: s.value || ((u, v) => (v === null || v === undefined ? "–" : fmt_value(v))),
+        value: s.value || ((u, v) => (v === null || v === undefined ? "–" : fmt_legend(v))),
         spanGaps: Boolean(s.span_gaps),
       })),
     ],
@@ -102,11 +102,6 @@ export function make_chart(box, { x, y, series, markers, sync, on_first_draw }) 
     if (box.clientWidth && box.clientWidth !== u.width) u.setSize({ width: box.clientWidth, height: HEIGHT });
   }).observe(box);
   return u;
-}
-
-function fmt_value(v) {
-  const a = Math.abs(v);
-  return a !== 0 && (a >= 1e5 || a < 1e-3) ? v.toExponential(3) : String(Number(v.toPrecision(4)));
 }
 
 /** Hands `data` to the chart and records on its box how many points it holds. */

@@ -1,7 +1,7 @@
 // Tick labels and the choice of a log axis.
 import assert from "node:assert/strict";
 import { test } from "node:test";
-import { fmt_log_tick, fmt_tick, is_decade, prefers_log } from "../../../clients/dashboard/axis_format.js";
+import { fmt_legend, fmt_log_tick, fmt_tick, is_decade, prefers_log } from "../../../clients/dashboard/axis_format.js";
 
 test("log ticks: decades short, exponents outside 0.01 ... 1000", () => {
   assert.deepEqual([1e-7, 0.01, 0.1, 1, 1000, 1e4, 3e-5, 0.3].map(fmt_log_tick),
@@ -18,4 +18,8 @@ test("a log axis for positive measures over two decades", () => {
   assert.ok(!prefers_log([1, 50]));
   assert.ok(!prefers_log([0, 1e-3, 1]));
   assert.ok(!prefers_log([null, null]));
+});
+
+test("legend values: 4 significant digits", () => {
+  assert.deepEqual([0, 12.3456, 2.5e-4, 123456].map(fmt_legend), ["0", "12.35", "2.500e-4", "1.235e+5"]);
 });
