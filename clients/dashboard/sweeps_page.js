@@ -1,6 +1,7 @@
-// Sweeps (/sweeps?label=KEY): the jobs sharing a label key as one table, ordered by the
-// label's value, with a summary quantity plotted against it; refreshed while jobs still run.
-// Without ?label=, the label keys in use.
+// Sweeps (/sweeps?label=KEY[&filter=k=v...]): the jobs sharing a label key as one table,
+// ordered by the label's value, with a summary quantity plotted against it; refreshed while
+// jobs still run. `filter` keeps the jobs with other labels too (one design loop among
+// several: filter=sweep=load-sweep). Without ?label=, the label keys in use.
 import { get_all_pages, get_json } from "./api.js";
 import { make_chart, show_data } from "./charts.js";
 import { el, fill, status_chip } from "./dom.js";
@@ -10,7 +11,9 @@ import { QUANTITIES, sort_rows, sweep_series } from "./sweep_rows.js";
 
 const REFRESH_MS = 3000;
 const TERMINAL = new Set(["succeeded", "failed", "canceled"]);
-const key = new URLSearchParams(location.search).get("label");
+const query = new URLSearchParams(location.search);
+const key = query.get("label");
+const filters = query.getAll("filter").filter((f) => f.includes("="));
 
 let rows = [];
 let chart = null;
@@ -26,6 +29,31 @@ async function show_index() {
   document.querySelector("#sweep-list tbody").replaceChildren(...trs);
 }
 
+/** This page with other filters. */
+function sweep_url(with_filters) {
+  const q = new URLSearchParams({ label: key });
+  for (const f of with_filters) q.append("filter", f);
+  return "/sweeps?" + q.toString();
+}
+
+/** The row's other labels; each narrows the sweep to the jobs that share it. */
+function other_labels(r) {
+  const span = el("span", { class: "labels" });
+  for (const [k, v] of Object.entries(r.labels)) {
+    if (k === key || filters.includes(`${k}=${v}`)) continue;
+    span.append(el("a", { class: "label", href: sweep_url([...filters, `${k}=${v}`]),
+                          title: `only the jobs with ${k}=${v}` }, `${k}=${v}`));
+  }
+  return span;
+}
+
+function show_filters() {
+  if (!filters.length) return;
+  fill("sweep-filter", "only jobs with ", ...filters.flatMap((f) => [
+    el("span", { class: "label" }, f, " ",
+       el("a", { href: sweep_url(filters.filter((g) => g !== f)), title: "remove this filter" }, "✕")), " "]));
+}
+
 function table_row(r) {
   return el("tr", { "data-id": r.id, "data-value": r.value },
     el("td", { class: "num" }, r.value),
@@ -38,6 +66,7 @@ function table_row(r) {
     el("td", { class: "num" }, fmt_number(r.max_mises)),
     el("td", { class: "num" }, fmt_number(r.max_contact_pressure)),
     el("td", { class: "num" }, fmt_number(r.total_contact_force)),
+    el("td", {}, other_labels(r)),
     el("td", { class: "time" }, fmt_time(r.created)));
 }
 
@@ -61,7 +90,9 @@ function draw_plot() {
 
 async function refresh() {
   try {
-    rows = sort_rows(await get_all_pages(`/v1/sweeps/${encodeURIComponent(key)}`, "jobs"));
+    const q = new URLSearchParams();
+    for (const f of filters) q.append("label", f);
+    rows = sort_rows(await get_all_pages(`/v1/sweeps/${encodeURIComponent(key)}?${q}`, "jobs"));
   } catch (e) {
     fill("sweep-counts", el("span", { class: "error" }, e.message));
     return true;  // try again
@@ -78,6 +109,7 @@ async function refresh() {
 async function show_sweep() {
   document.getElementById("sweep").hidden = false;
   fill("sweep-title", `Sweep over `, el("code", {}, key));
+  show_filters();
   document.title = `${key} · sweeps · kontaktd`;
   const select = document.getElementById("quantity");
   select.append(...QUANTITIES.map((q) => el("option", { value: q.key }, q.label)));

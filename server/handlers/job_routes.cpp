@@ -2,7 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "server/digest.hpp"
-#include "server/handlers/page_token.hpp"
+#include "server/handlers/job_query.hpp"
 #include "server/handlers/routes.hpp"
 #include "server/handlers/submit_job.hpp"
 #include "server/job_json.hpp"
@@ -35,12 +35,7 @@ std::optional<HttpResponse> read_job_query(const HttpRequest& request, JobQuery&
       start = end + 1;
     }
   }
-  for (const std::string& label : request.params("label")) {
-    const std::size_t eq = label.find('=');
-    if (eq == std::string::npos || eq == 0 || label.find('"') != std::string::npos)
-      return invalid_parameter("label", "expected key=value, got '" + label + "'");
-    query.labels.emplace_back(label.substr(0, eq), label.substr(eq + 1));
-  }
+  if (auto bad = read_label_filters(request, query)) return bad;
   return read_page_parameters(request, kDefaultPageSize, kMaxPageSize, query);
 }
 

@@ -1,8 +1,9 @@
-// Sweeps: the jobs that share a label key (a design loop's parameter), one summary row each.
+// Sweeps: the jobs that share a label key (a design loop's parameter), one summary row each,
+// optionally narrowed by other labels (label=sweep=load-sweep).
 #include <nlohmann/json.hpp>
 
 #include "server/handlers/label_key.hpp"
-#include "server/handlers/page_token.hpp"
+#include "server/handlers/job_query.hpp"
 #include "server/handlers/routes.hpp"
 #include "server/job_json.hpp"
 #include "server/problem.hpp"
@@ -24,6 +25,7 @@ HttpResponse get_sweep(ApiContext& ctx, const HttpRequest& request, const std::s
   if (!is_label_key(key)) return invalid_parameter("key", "1 to 64 of A-Z a-z 0-9 _ - .");
   JobQuery query;
   query.label_keys = {key};
+  if (auto bad = read_label_filters(request, query)) return *bad;
   if (auto bad = read_page_parameters(request, kDefaultRows, kMaxRows, query)) return *bad;
   const JobPage page = ctx.store.list_jobs(query);
   json rows = json::array();

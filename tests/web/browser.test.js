@@ -197,14 +197,19 @@ test("job list: filters, pages, links, queue depth and worker use", async (t) =>
 
 test("sweep: one row per job by label value, a summary value plotted against it", async (t) => {
   const loads = [5, 1, 8, 2, 3];
-  for (const k of loads) await submit(OPEN, `sweep_${k}.inp`, `name=sweep-${k}&label=load=${k}`);
+  for (const k of loads) await submit(OPEN, `sweep_${k}.inp`, `name=sweep-${k}&label=load=${k}&label=series=a`);
+  await submit(OPEN, "sweep_2.inp", "name=other-series&label=load=4&label=series=b");  // another loop
   const page = await open_page(t);
   await page.goto(`${OPEN}/sweeps?label=load`);
   // Live: the page refreshes until every job has finished.
+  await page.waitForFunction(() => document.querySelectorAll("#sweep-table .chip[data-status=succeeded]").length === 6);
+  await page.click("#sweep-table a.label:text-is('series=a')");  // narrow to one design loop
+  await page.waitForURL(/filter=series%3Da/);
   await page.waitForFunction(() => document.querySelectorAll("#sweep-table .chip[data-status=succeeded]").length === 5);
   await page.waitForFunction(() => Number(document.querySelector("#plot-sweep").dataset.points) === 5);
   const values = await page.$$eval("#sweep-table tbody tr", (rows) => rows.map((r) => r.dataset.value));
   assert.deepEqual(values, ["1", "2", "3", "5", "8"]);
+  assert.match(await page.textContent("#sweep-filter"), /only jobs with series=a/);
   const sweep = await api(OPEN, "/v1/sweeps/load");
   const u = Object.fromEntries(sweep.jobs.map((r) => [r.value, r.max_displacement]));
   assert.ok(Math.abs(u["8"] / u["1"] - 8) < 1e-6, "linear: |U| scales with the load");

@@ -384,6 +384,12 @@ TEST_F(HandlerTest, SweepsGroupJobsByLabelKey) {
   ASSERT_EQ(p2["jobs"].size(), 1u);
   EXPECT_EQ(p2["jobs"][0]["id"], ids[0]);
 
+  // Narrowed by another label: one design loop's jobs among several.
+  const json beams = body(call("GET", "/v1/sweeps/load", "", {}, {{"label", "case=beam"}}));
+  EXPECT_EQ(beams["jobs"].size(), 3u);
+  EXPECT_TRUE(body(call("GET", "/v1/sweeps/load", "", {}, {{"label", "case=other"}}))["jobs"].empty());
+  EXPECT_EQ(body(call("GET", "/v1/sweeps/load", "", {}, {{"label", "case"}}))["field"], "label");
+
   EXPECT_TRUE(body(call("GET", "/v1/sweeps/nothing"))["jobs"].empty());
   EXPECT_EQ(body(call("GET", "/v1/sweeps/bad key"))["field"], "key");
   EXPECT_EQ(body(call("GET", "/v1/sweeps/load", "", {}, {{"limit", "1001"}}))["field"], "limit");

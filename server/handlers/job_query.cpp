@@ -1,4 +1,4 @@
-#include "server/handlers/page_token.hpp"
+#include "server/handlers/job_query.hpp"
 
 #include <cctype>
 #include <cstdlib>
@@ -21,6 +21,16 @@ std::optional<std::pair<std::int64_t, std::string>> parse_page_token(const std::
 }
 
 }  // namespace
+
+std::optional<HttpResponse> read_label_filters(const HttpRequest& request, JobQuery& query) {
+  for (const std::string& label : request.params("label")) {
+    const std::size_t eq = label.find('=');
+    if (eq == std::string::npos || eq == 0 || label.find('"') != std::string::npos)
+      return invalid_parameter("label", "expected key=value, got '" + label + "'");
+    query.labels.emplace_back(label.substr(0, eq), label.substr(eq + 1));
+  }
+  return std::nullopt;
+}
 
 std::string page_token_after(const JobRecord& last) {
   return std::to_string(last.created_ms) + "." + last.id;
