@@ -62,10 +62,9 @@ std::optional<HttpResponse> check_options(const std::optional<std::string>& name
   return std::nullopt;
 }
 
-/// Reads a "labels" member: an object of strings.
+/// Adds a "labels" member (an object of strings) to `labels`.
 std::optional<HttpResponse> read_labels(const json& j, std::map<std::string, std::string>& labels) {
   if (!j.is_object()) return invalid_parameter("labels", "must be an object");
-  labels.clear();
   for (const auto& [k, v] : j.items()) {
     if (!v.is_string()) return invalid_parameter("labels", "values must be strings");
     labels[k] = v.get<std::string>();
@@ -239,6 +238,7 @@ std::optional<HttpResponse> read_resubmission(const HttpRequest& request, NewJob
       if (!value.is_string()) return invalid_parameter("name", "must be a string");
       job.name = value.get<std::string>();
     } else if (field == "labels") {
+      job.labels.clear();  // they replace the source job's
       if (auto bad = read_labels(value, job.labels)) return bad;
     } else {
       return invalid_parameter(field, "unknown member (scheme, name, labels)");

@@ -121,6 +121,9 @@ TEST_F(HandlerTest, JsonSubmission) {
   const auto r = submit(request.dump(), {}, {{"content-type", "application/json"}});
   ASSERT_EQ(r.status, 201) << r.body;
   EXPECT_EQ(body(r)["labels"]["k"], "v");
+  // Labels from the query and from the body add up.
+  const auto both = submit(request.dump(), {{"label", "q=1"}}, {{"content-type", "application/json"}});
+  EXPECT_EQ(body(both)["labels"], json({{"k", "v"}, {"q", "1"}}));
   EXPECT_EQ(submit("[1]", {}, {{"content-type", "application/json"}}).status, 400);
 }
 
