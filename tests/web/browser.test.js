@@ -255,6 +255,46 @@ test("token: asked once, kept in session storage, never in a URL", async (t) => 
   for (const url of urls) assert.ok(!url.includes(TOKEN) && !url.includes("access_token"), url);
 });
 
+/** SSE frames of synthetic events numbered from `first_seq`. */
+const sse_frames = (events, first_seq = 1) => events.map((e, i) =>
+  `id: ${first_seq + i}\nevent: ${e.event}\ndata: ${JSON.stringify({ ...e, seq: first_seq + i, run: 1 })}\n\n`).join("");
+
+test("a dropped stream resumes from Last-Event-ID: nothing lost, nothing twice", async (t) => {
+  // The job's API is served by the test, so the connection can be dropped at a known event.
+  const id = "e".repeat(32);
+  const job = { ...(await api(OPEN, `/v1/jobs/${contact_job.id}`)), id, name: "dropped-stream", status: "running",
+                finished: null };
+  const n = 40;
+  const events = [{ event: "status", status: "running" }];
+  for (let i = 1; i <= n; i += 1)
+    events.push({ event: "iteration", step: 1, increment: i, attempt: 1, iteration: 1, step_time: i / n,
+                  total_time: i / n, dt: 1 / n, residual: 1 / i, correction: 0.1 / i, wall_time: i / 10 });
+  events.push({ event: "status", status: "succeeded" });
+  const cut = 25;  // the first connection ends after event 25, without the terminal status
+  const requests = [];
+  const page = await open_page(t);
+  const json = (data) => ({ status: 200, contentType: "application/json", body: JSON.stringify(data) });
+  await page.route(`**/v1/jobs/${id}`, (r) => r.fulfill(json(job)));
+  await page.route(`**/v1/jobs/${id}/events`, (r) => {
+    const last = r.request().headers()["last-event-id"];
+    requests.push(last ?? null);
+    const after = last === undefined ? 0 : Number(last);
+    const upto = requests.length === 1 ? cut : events.length;
+    r.fulfill({ status: 200, contentType: "text/event-stream",
+                body: sse_frames(events.slice(after, upto), after + 1) });
+  });
+  for (const part of ["summary", "results"])
+    await page.route(`**/v1/jobs/${id}/${part}`, (r) => r.fulfill(json(part === "results" ? { artifacts: [] } : {
+      id, name: job.name, status: "succeeded", reason: null, labels: {}, iterations: n, wall_time: 4,
+      max_displacement: 1, max_mises: 1, max_contact_pressure: null, total_contact_force: null })));
+  await page.goto(`${OPEN}/jobs/${id}`);
+  await page.waitForSelector("#job-header[data-history-loaded]");
+  assert.deepEqual(requests, [null, String(cut)], "one reconnect, resuming after the last event seen");
+  assert.equal(await points(page, "#plot-residual"), n);
+  const seqs = await page.$$eval("#log li", (lines) => lines.map((l) => Number(l.textContent.match(/^#(\d+)/)[1])));
+  assert.deepEqual(seqs, events.map((_, i) => i + 1));
+});
+
 test("fields the solver will add: stick/slip series and other numeric measures are plotted", async (t) => {
   // The solver does not report friction yet: the page gets a job whose API answers are
   // served by the test (playwright routes), the rest is the real page.
@@ -273,7 +313,7 @@ test("fields the solver will add: stick/slip series and other numeric measures a
                                 step_time: inc / 15, total_time: inc / 15, dt: 1 / 15, contact_elements: 100 + i, wall_time: i / 10 });
   }
   events.push({ event: "done", status: "converged", summary: { iterations: n } }, { event: "status", status: "succeeded" });
-  const body = events.map((e, i) => `id: ${i + 1}\nevent: ${e.event}\ndata: ${JSON.stringify({ ...e, seq: i + 1, run: 1 })}\n\n`).join("");
+  const body = sse_frames(events);
   const page = await open_page(t);
   const json = (data) => ({ status: 200, contentType: "application/json", body: JSON.stringify(data) });
   await page.route(`**/v1/jobs/${id}`, (r) => r.fulfill(json(job)));
