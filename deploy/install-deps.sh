@@ -14,8 +14,14 @@ PACKAGES=(
   python3 python3-numpy python3-h5py python3-yaml python3-jsonschema
   wrk curl
   time
+  chromium
   calculix-ccx calculix-ccx-test calculix-ccx-doc
 )
+
+# The dashboard's npm packages (uPlot, playwright-core) need node and npm. A machine that has
+# them from elsewhere (e.g. NodeSource, which bundles npm) keeps them: Debian's npm package
+# would conflict with that nodejs.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then PACKAGES+=(nodejs npm); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

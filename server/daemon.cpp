@@ -64,7 +64,7 @@ int run_daemon(const Settings& settings) {
   handlers::ApiContext api{.store = store, .files = files, .control = pool,
                            .max_unpacked = kUnpackFactor * settings.max_body};
   Router router = handlers::make_router(api);
-  router.require_tokens(tokens, {"/healthz"});
+  router.require_tokens(tokens);
 
   net::io_context ioc(settings.io_threads);
   net::thread_pool handler_pool(static_cast<std::size_t>(settings.handler_threads));

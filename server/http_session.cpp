@@ -193,7 +193,8 @@ void HttpSession::stream_events(const EventStreamBody& body) {
 void HttpSession::poll_events() {
   const std::uint64_t generation = ctx_.store.generation();
   const bool idle_too_long = std::chrono::steady_clock::now() - last_write_ > kStreamKeepAlive;
-  if (generation == seen_generation_ && !idle_too_long) {
+  // A replay longer than one batch goes on at once: no new commit will announce the rest.
+  if (generation == seen_generation_ && !idle_too_long && !stream_behind_) {
     stream_.expires_never();
     timer_.expires_after(kStreamPoll);
     timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
@@ -214,6 +215,7 @@ void HttpSession::poll_events() {
       const bool caught_up = static_cast<int>(events.size()) < kEventsPerWrite;
       finished = !job || (caught_up && (is_terminal(job->status) || !self->stream_follow_));
       if (!events.empty()) self->stream_seq_ = events.back().seq;
+      self->stream_behind_ = !caught_up;
     } catch (const std::exception&) {  // store trouble: end the stream, the client resumes
     }
     net::post(self->stream_.get_executor(), [self, frames = std::move(frames), finished]() mutable {

@@ -111,4 +111,32 @@ json artifacts_document(const std::vector<Artifact>& artifacts) {
   return {{"artifacts", list}};
 }
 
+json queue_document(const StoreCounts& counts, int workers, int busy_workers) {
+  json finished = json::object();
+  for (JobStatus s : {JobStatus::Succeeded, JobStatus::Failed, JobStatus::Canceled}) {
+    const auto it = counts.finished.find(status_name(s));
+    finished[status_name(s)] = it == counts.finished.end() ? 0 : it->second;
+  }
+  return {{"queued", counts.queued},       {"running", counts.running},
+          {"canceling", counts.canceling}, {"finished", finished},
+          {"workers", workers},            {"busy_workers", busy_workers}};
+}
+
+json sweep_list_document(const std::vector<LabelKeyCount>& keys) {
+  json list = json::array();
+  for (const LabelKeyCount& k : keys)
+    list.push_back({{"key", k.key}, {"jobs", k.jobs}, {"latest", rfc3339(k.latest_ms)}});
+  return {{"sweeps", list}};
+}
+
+json sweep_row_document(const JobRecord& job, const std::string& key) {
+  json row = summary_document(job);
+  const auto value = job.labels.find(key);
+  row["value"] = value == job.labels.end() ? json(nullptr) : json(value->second);
+  row["scheme"] = or_null(job.scheme);
+  row["created"] = rfc3339(job.created_ms);
+  row["finished"] = optional_time(job.finished_ms);
+  return row;
+}
+
 }  // namespace kontakt::server

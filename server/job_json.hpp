@@ -1,5 +1,5 @@
 // The JSON documents of the API (schemas in proto/openapi.yaml): the job status document,
-// the summary, the artifact list, and RFC 3339 times.
+// the summary, the artifact list, the queue, sweeps, and RFC 3339 times.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "server/job_record.hpp"
+#include "server/job_store.hpp"
 
 namespace kontakt::server {
 
@@ -23,5 +24,15 @@ nlohmann::json job_document(const JobRecord& job, std::optional<int> queue_posit
 nlohmann::json summary_document(const JobRecord& job);
 
 nlohmann::json artifacts_document(const std::vector<Artifact>& artifacts);
+
+/// GET /v1/queue: jobs per state and the workers' use.
+nlohmann::json queue_document(const StoreCounts& counts, int workers, int busy_workers);
+
+/// GET /v1/sweeps: the label keys in use.
+nlohmann::json sweep_list_document(const std::vector<LabelKeyCount>& keys);
+
+/// One row of GET /v1/sweeps/{key}: the summary plus the job's value of `key`, its scheme and
+/// times.
+nlohmann::json sweep_row_document(const JobRecord& job, const std::string& key);
 
 }  // namespace kontakt::server

@@ -218,6 +218,8 @@ JobPage JobStore::list_jobs(const JobQuery& query) {
   }
   for (std::size_t i = 0; i < query.labels.size(); ++i)
     sql += " AND json_extract(labels, '$.\"' || ? || '\"') = ?";
+  for (std::size_t i = 0; i < query.label_keys.size(); ++i)
+    sql += " AND EXISTS (SELECT 1 FROM json_each(jobs.labels) WHERE json_each.key = ?)";
   if (query.after) sql += " AND (created_ms < ? OR (created_ms = ? AND id < ?))";
   sql += " ORDER BY created_ms DESC, id DESC LIMIT ?";
   auto lease = read();
@@ -228,6 +230,7 @@ JobPage JobStore::list_jobs(const JobQuery& query) {
     st.bind(b++, key);
     st.bind(b++, value);
   }
+  for (const std::string& key : query.label_keys) st.bind(b++, key);
   if (query.after) {
     st.bind(b++, query.after->first);
     st.bind(b++, query.after->first);
@@ -428,6 +431,17 @@ StoreCounts JobStore::counts() {
     else c.finished[status_name(*status)] = n;
   }
   return c;
+}
+
+std::vector<LabelKeyCount> JobStore::label_keys() {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT l.key, COUNT(*), MAX(jobs.created_ms) FROM jobs, "
+                           "json_each(jobs.labels) AS l GROUP BY l.key "
+                           "ORDER BY MAX(jobs.created_ms) DESC, l.key");
+  std::vector<LabelKeyCount> keys;
+  while (st.step())
+    keys.push_back({st.text(0), static_cast<int>(st.integer(1)), st.integer(2)});
+  return keys;
 }
 
 std::vector<double> JobStore::run_durations() {

@@ -25,6 +25,7 @@ namespace kontakt::server {
 struct JobQuery {
   std::vector<JobStatus> statuses;                          ///< empty: any
   std::vector<std::pair<std::string, std::string>> labels;  ///< every one must match
+  std::vector<std::string> label_keys;                      ///< every key must be present
   int limit = 50;
   /// Resume after this (created_ms, id): the last row of the previous page.
   std::optional<std::pair<std::int64_t, std::string>> after;
@@ -40,6 +41,13 @@ enum class InsertResult { Created, Replayed, KeyConflict };
 struct StoreCounts {
   int queued = 0, running = 0, canceling = 0;
   std::map<std::string, int> finished;  ///< by terminal status
+};
+
+/// One label key and the jobs that carry it: a sweep.
+struct LabelKeyCount {
+  std::string key;
+  int jobs = 0;
+  std::int64_t latest_ms = 0;  ///< creation time of its newest job
 };
 
 struct RecoveryReport {
@@ -87,6 +95,8 @@ class JobStore {
   std::vector<Artifact> artifacts(const std::string& id);
 
   StoreCounts counts();
+  /// Every label key in use, the most recently used first.
+  std::vector<LabelKeyCount> label_keys();
   /// Run times in seconds of every job that started and finished.
   std::vector<double> run_durations();
   std::vector<std::string> all_ids();

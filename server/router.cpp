@@ -1,5 +1,6 @@
 #include "server/router.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "server/problem.hpp"
@@ -35,31 +36,32 @@ std::vector<std::string> split_path(const std::string& path) {
   return segments;
 }
 
-void Router::require_tokens(std::set<std::string> tokens, std::set<std::string> open_paths) {
-  tokens_ = std::move(tokens);
-  open_paths_ = std::move(open_paths);
-}
+void Router::require_tokens(std::set<std::string> tokens) { tokens_ = std::move(tokens); }
 
-void Router::add(const std::string& method, const std::string& pattern, Handler handler) {
-  routes_.push_back({method, split_path(pattern), std::move(handler)});
+void Router::add(const std::string& method, const std::string& pattern, Handler handler,
+                 Access access) {
+  routes_.push_back({method, split_path(pattern), std::move(handler), access});
 }
 
 bool Router::authorized(const HttpRequest& request) const {
-  if (tokens_.empty() || open_paths_.count(request.path)) return true;
+  if (tokens_.empty()) return true;
   const std::string prefix = "Bearer ";
-  if (const auto auth = request.header("authorization"); auth && auth->rfind(prefix, 0) == 0)
-    return tokens_.count(auth->substr(prefix.size())) > 0;
-  if (const auto token = request.param("access_token")) return tokens_.count(*token) > 0;
-  return false;
+  const auto auth = request.header("authorization");
+  return auth && auth->rfind(prefix, 0) == 0 && tokens_.count(auth->substr(prefix.size())) > 0;
 }
 
 HttpResponse Router::handle(const HttpRequest& request) const {
-  if (!authorized(request)) {
+  const auto path = split_path(request.path);
+  // A path is public when a public route has its pattern (then a wrong method gets its 405).
+  const bool is_public = std::any_of(routes_.begin(), routes_.end(), [&](const Route& route) {
+    PathParams ignored;
+    return route.access == Access::Public && match(route.segments, path, ignored);
+  });
+  if (!is_public && !authorized(request)) {
     HttpResponse r = problem(401, "unauthorized", "a valid bearer token is required");
     r.headers.emplace_back("WWW-Authenticate", "Bearer realm=\"kontaktd\"");
     return r;
   }
-  const auto path = split_path(request.path);
   std::string allowed;
   for (const Route& route : routes_) {
     PathParams params;

@@ -1,7 +1,8 @@
-// Jobs as resources: submit, list (filters and cursor paging), read, cancel, delete.
+// Jobs as resources: submit, list (filters and cursor paging), read, cancel, resubmit, delete.
 #include <nlohmann/json.hpp>
 
 #include "server/digest.hpp"
+#include "server/handlers/job_query.hpp"
 #include "server/handlers/routes.hpp"
 #include "server/handlers/submit_job.hpp"
 #include "server/job_json.hpp"
@@ -21,17 +22,6 @@ json document_of(ApiContext& ctx, const JobRecord& job) {
   return job_document(job, position, !ctx.store.artifacts(job.id).empty());
 }
 
-/// The page token is the (created_ms, id) of the last row shown: "<ms>.<id>".
-std::optional<std::pair<std::int64_t, std::string>> parse_page_token(const std::string& token) {
-  const std::size_t dot = token.find('.');
-  if (dot == std::string::npos || dot == 0 || dot > 19) return std::nullopt;
-  for (std::size_t i = 0; i < dot; ++i)
-    if (!std::isdigit(static_cast<unsigned char>(token[i]))) return std::nullopt;
-  const std::string id = token.substr(dot + 1);
-  if (!is_job_id(id)) return std::nullopt;
-  return std::pair{std::stoll(token.substr(0, dot)), id};
-}
-
 /// Reads status=, label=, limit=, page_token=; a 400 naming the bad one.
 std::optional<HttpResponse> read_job_query(const HttpRequest& request, JobQuery& query) {
   for (const std::string& list : request.params("status")) {
@@ -45,25 +35,8 @@ std::optional<HttpResponse> read_job_query(const HttpRequest& request, JobQuery&
       start = end + 1;
     }
   }
-  for (const std::string& label : request.params("label")) {
-    const std::size_t eq = label.find('=');
-    if (eq == std::string::npos || eq == 0 || label.find('"') != std::string::npos)
-      return invalid_parameter("label", "expected key=value, got '" + label + "'");
-    query.labels.emplace_back(label.substr(0, eq), label.substr(eq + 1));
-  }
-  query.limit = kDefaultPageSize;
-  if (const auto limit = request.param("limit")) {
-    char* end = nullptr;
-    const long n = std::strtol(limit->c_str(), &end, 10);
-    if (limit->empty() || *end || n < 1 || n > kMaxPageSize)
-      return invalid_parameter("limit", "a whole number from 1 to 200");
-    query.limit = static_cast<int>(n);
-  }
-  if (const auto token = request.param("page_token")) {
-    query.after = parse_page_token(*token);
-    if (!query.after) return invalid_parameter("page_token", "not a token this server issued");
-  }
-  return std::nullopt;
+  if (auto bad = read_label_filters(request, query)) return bad;
+  return read_page_parameters(request, kDefaultPageSize, kMaxPageSize, query);
 }
 
 std::string next_link(const HttpRequest& request, const std::string& token) {
@@ -82,8 +55,7 @@ HttpResponse list_jobs(ApiContext& ctx, const HttpRequest& request) {
   json body{{"jobs", jobs}, {"next_page_token", nullptr}};
   HttpResponse r;
   if (page.more) {
-    const JobRecord& last = page.jobs.back();
-    const std::string token = std::to_string(last.created_ms) + "." + last.id;
+    const std::string token = page_token_after(page.jobs.back());
     body["next_page_token"] = token;
     r.headers.emplace_back("Link", "<" + next_link(request, token) + ">; rel=\"next\"");
   }
@@ -139,6 +111,9 @@ void add_job_routes(Router& router, ApiContext& ctx) {
   });
   router.add("POST", "/v1/jobs/{id}/cancel", [&ctx](const HttpRequest&, const PathParams& p) {
     return cancel_job(ctx, p.at("id"));
+  });
+  router.add("POST", "/v1/jobs/{id}/resubmit", [&ctx](const HttpRequest& r, const PathParams& p) {
+    return resubmit_job(ctx, r, p.at("id"));
   });
 }
 

@@ -6,6 +6,7 @@
 #include "model/contact.hpp"
 #include "server/deck_upload.hpp"
 #include "server/digest.hpp"
+#include "server/handlers/label_key.hpp"
 #include "server/include_check.hpp"
 #include "server/job_json.hpp"
 #include "server/problem.hpp"
@@ -36,17 +37,38 @@ std::string media_type_of(const HttpRequest& request) {
   return type;
 }
 
-bool is_label_key(const std::string& key) {
-  if (key.empty() || key.size() > 64) return false;
-  for (unsigned char c : key)
-    if (!std::isalnum(c) && c != '_' && c != '-' && c != '.') return false;
-  return true;
-}
-
 bool has_control_chars(const std::string& s) {
   for (unsigned char c : s)
     if (c < 0x20 || c == 0x7f) return true;
   return false;
+}
+
+/// Name, scheme and labels of a submission or a resubmission; a 400 naming the bad one.
+std::optional<HttpResponse> check_options(const std::optional<std::string>& name,
+                                          const std::optional<std::string>& scheme,
+                                          const std::map<std::string, std::string>& labels) {
+  if (name && (name->empty() || name->size() > kMaxNameLength || has_control_chars(*name)))
+    return invalid_parameter("name", "1 to 200 printable characters");
+  if (scheme && !model::contact_scheme_from_name(*scheme))
+    return invalid_parameter("scheme", "unknown contact scheme '" + *scheme + "' (" +
+                                           model::contact_scheme_names() + ")");
+  if (labels.size() > kMaxLabels) return invalid_parameter("labels", "at most 32 labels");
+  for (const auto& [k, v] : labels) {
+    if (!is_label_key(k)) return invalid_parameter("labels", "key '" + k + "': 1 to 64 of A-Z a-z 0-9 _ - .");
+    if (v.size() > kMaxLabelValue || has_control_chars(v))
+      return invalid_parameter("labels", "value of '" + k + "': at most 256 printable characters");
+  }
+  return std::nullopt;
+}
+
+/// Adds a "labels" member (an object of strings) to `labels`.
+std::optional<HttpResponse> read_labels(const json& j, std::map<std::string, std::string>& labels) {
+  if (!j.is_object()) return invalid_parameter("labels", "must be an object");
+  for (const auto& [k, v] : j.items()) {
+    if (!v.is_string()) return invalid_parameter("labels", "values must be strings");
+    labels[k] = v.get<std::string>();
+  }
+  return std::nullopt;
 }
 
 /// Fills `s` from a JSON body; returns a 400 when it is malformed.
@@ -65,13 +87,7 @@ std::optional<HttpResponse> read_json_body(const std::string& body, Submission& 
     else if (std::string(field) == "scheme") s.scheme = v;
     else s.main = v;
   }
-  if (j.contains("labels")) {
-    if (!j["labels"].is_object()) return invalid_parameter("labels", "must be an object");
-    for (const auto& [k, v] : j["labels"].items()) {
-      if (!v.is_string()) return invalid_parameter("labels", "values must be strings");
-      s.labels[k] = v.get<std::string>();
-    }
-  }
+  if (j.contains("labels")) return read_labels(j["labels"], s.labels);
   return std::nullopt;
 }
 
@@ -97,18 +113,7 @@ std::optional<HttpResponse> read_submission(const HttpRequest& request, Submissi
                    "send the deck as text/plain, application/zip or application/json, not " +
                        s.media_type);
   }
-  if (s.name && (s.name->empty() || s.name->size() > kMaxNameLength || has_control_chars(*s.name)))
-    return invalid_parameter("name", "1 to 200 printable characters");
-  if (s.scheme && !model::contact_scheme_from_name(*s.scheme))
-    return invalid_parameter("scheme", "unknown contact scheme '" + *s.scheme + "' (" +
-                                           model::contact_scheme_names() + ")");
-  if (s.labels.size() > kMaxLabels) return invalid_parameter("labels", "at most 32 labels");
-  for (const auto& [k, v] : s.labels) {
-    if (!is_label_key(k)) return invalid_parameter("labels", "key '" + k + "': 1 to 64 of A-Z a-z 0-9 _ - .");
-    if (v.size() > kMaxLabelValue || has_control_chars(v))
-      return invalid_parameter("labels", "value of '" + k + "': at most 256 printable characters");
-  }
-  return std::nullopt;
+  return check_options(s.name, s.scheme, s.labels);
 }
 
 /// Same key, same submission <=> same fingerprint.
@@ -151,10 +156,21 @@ HttpResponse key_reused() {
                  "this Idempotency-Key was used for a different submission");
 }
 
-/// Writes the deck into the job's folder and parses it; a 4xx response when it is refused.
-std::optional<HttpResponse> store_and_check(ApiContext& ctx, const Submission& s,
-                                            const std::string& id, NewJob& job) {
-  const fs::path input_dir = ctx.files.input_dir(id);
+/// Parses the deck in place in the job's input folder; a 422 when the reader refuses it.
+std::optional<HttpResponse> check_stored_deck(ApiContext& ctx, NewJob& job) {
+  const fs::path input_dir = ctx.files.input_dir(job.id);
+  if (const auto escape = find_escaping_include(input_dir, job.main_file))
+    return deck_rejected(*escape, input_dir);
+  const app::DeckCheck check = app::check_deck(input_dir / job.main_file, job.scheme);
+  if (check.error) return deck_rejected(*check.error, input_dir);
+  job.n_steps = check.n_steps;
+  job.planned_time = check.total_time;
+  return std::nullopt;
+}
+
+/// Writes the submitted deck into the job's folder; a 400 for a bad upload.
+std::optional<HttpResponse> store_upload(ApiContext& ctx, const Submission& s, NewJob& job) {
+  const fs::path input_dir = ctx.files.input_dir(job.id);
   try {
     job.main_file = s.media_type == "application/zip"
                         ? write_zip_deck(s.deck, s.main, input_dir, ctx.max_unpacked)
@@ -162,40 +178,38 @@ std::optional<HttpResponse> store_and_check(ApiContext& ctx, const Submission& s
   } catch (const UploadError& e) {
     return problem(400, "invalid_upload", e.field() + ": " + e.what(), {{"field", e.field()}});
   }
-  if (const auto escape = find_escaping_include(input_dir, job.main_file))
-    return deck_rejected(*escape, input_dir);
-  const app::DeckCheck check = app::check_deck(input_dir / job.main_file, s.scheme);
-  if (check.error) return deck_rejected(*check.error, input_dir);
-  job.n_steps = check.n_steps;
-  job.planned_time = check.total_time;
   return std::nullopt;
 }
 
-}  // namespace
-
-HttpResponse submit_job(ApiContext& ctx, const HttpRequest& request) {
-  Submission s;
-  if (auto bad = read_submission(request, s)) return *bad;
-  const auto key = request.header("idempotency-key");
+/// The Idempotency-Key header: nullopt when absent; a 400 when malformed.
+std::optional<HttpResponse> read_key(const HttpRequest& request, std::optional<std::string>& key) {
+  key = request.header("idempotency-key");
   if (key && (key->empty() || key->size() > kMaxIdempotencyKey || has_control_chars(*key)))
     return invalid_parameter("Idempotency-Key", "1 to 255 printable characters");
-  const std::string fingerprint = fingerprint_of(s);
-  if (key) {
-    if (auto existing = ctx.store.find_by_key(*key))
-      return existing->fingerprint == fingerprint ? created(ctx, *existing, true) : key_reused();
-  }
-  NewJob job;
-  job.id = new_job_id();
-  job.scheme = s.scheme;
-  job.labels = s.labels;
-  job.idempotency_key = key;
-  job.fingerprint = fingerprint;
-  if (auto refused = store_and_check(ctx, s, job.id, job)) {
-    ctx.files.remove(job.id);
-    return *refused;
-  }
-  job.name = s.name.value_or(fs::path(job.main_file).stem().string());
+  return std::nullopt;
+}
+
+/// A job with this key already: the same submission replays it, another one is refused.
+std::optional<HttpResponse> replay_of(ApiContext& ctx, const NewJob& job) {
+  if (!job.idempotency_key) return std::nullopt;
+  const auto existing = ctx.store.find_by_key(*job.idempotency_key);
+  if (!existing) return std::nullopt;
+  return existing->fingerprint == job.fingerprint ? created(ctx, *existing, true) : key_reused();
+}
+
+/// Queues a job whose input folder `fill` writes; the folder goes again unless a job was
+/// created from it.
+template <class Fill>
+HttpResponse queue_new_job(ApiContext& ctx, NewJob job, Fill fill) {
+  if (auto replayed = replay_of(ctx, job)) return *replayed;
   try {
+    std::optional<HttpResponse> refused = fill(job);
+    if (!refused) refused = check_stored_deck(ctx, job);
+    if (refused) {
+      ctx.files.remove(job.id);
+      return *refused;
+    }
+    if (job.name.empty()) job.name = fs::path(job.main_file).stem().string();
     const auto [result, record] = ctx.store.insert_job(job);
     if (result != InsertResult::Created) ctx.files.remove(job.id);  // lost a race on the key
     if (result == InsertResult::KeyConflict) return key_reused();
@@ -205,6 +219,73 @@ HttpResponse submit_job(ApiContext& ctx, const HttpRequest& request) {
     ctx.files.remove(job.id);
     throw;
   }
+}
+
+/// A resubmission's options: absent members keep the source job's; "scheme": null runs the
+/// deck's own schemes.
+std::optional<HttpResponse> read_resubmission(const HttpRequest& request, NewJob& job) {
+  if (request.body.empty()) return std::nullopt;
+  if (media_type_of(request) != "application/json")
+    return problem(415, "unsupported_media_type", "send the options as application/json");
+  const json j = json::parse(request.body, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return invalid_parameter("body", "not a JSON object");
+  for (const auto& [field, value] : j.items()) {
+    if (field == "scheme") {
+      if (!value.is_null() && !value.is_string()) return invalid_parameter("scheme", "a string or null");
+      job.scheme = value.is_null() ? std::nullopt : std::optional(value.get<std::string>());
+    } else if (field == "name") {
+      if (!value.is_string()) return invalid_parameter("name", "must be a string");
+      job.name = value.get<std::string>();
+    } else if (field == "labels") {
+      job.labels.clear();  // they replace the source job's
+      if (auto bad = read_labels(value, job.labels)) return bad;
+    } else {
+      return invalid_parameter(field, "unknown member (scheme, name, labels)");
+    }
+  }
+  return check_options(job.name, job.scheme, job.labels);
+}
+
+}  // namespace
+
+HttpResponse submit_job(ApiContext& ctx, const HttpRequest& request) {
+  Submission s;
+  if (auto bad = read_submission(request, s)) return *bad;
+  NewJob job;
+  if (auto bad = read_key(request, job.idempotency_key)) return *bad;
+  job.id = new_job_id();
+  job.name = s.name.value_or("");
+  job.scheme = s.scheme;
+  job.labels = s.labels;
+  job.fingerprint = fingerprint_of(s);
+  return queue_new_job(ctx, std::move(job), [&](NewJob& j) { return store_upload(ctx, s, j); });
+}
+
+HttpResponse resubmit_job(ApiContext& ctx, const HttpRequest& request, const std::string& source_id) {
+  const auto source = ctx.store.find_job(source_id);
+  if (!source) return job_not_found(source_id);
+  NewJob job;
+  job.name = source->name;
+  job.scheme = source->scheme;
+  job.labels = source->labels;
+  job.main_file = source->main_file;
+  if (auto bad = read_resubmission(request, job)) return *bad;
+  if (auto bad = read_key(request, job.idempotency_key)) return *bad;
+  job.id = new_job_id();
+  const json options{{"resubmit_of", source_id}, {"name", job.name},
+                     {"scheme", job.scheme.value_or("")}, {"labels", job.labels}};
+  job.fingerprint = sha256_hex(options.dump());
+  return queue_new_job(ctx, std::move(job), [&](NewJob& j) -> std::optional<HttpResponse> {
+    std::error_code ec;
+    fs::create_directories(ctx.files.job_dir(j.id), ec);
+    if (!ec)
+      fs::copy(ctx.files.input_dir(source_id), ctx.files.input_dir(j.id),
+               fs::copy_options::recursive, ec);
+    if (ec)
+      return problem(409, "input_unavailable", "the input of job " + source_id +
+                                                   " cannot be copied: " + ec.message());
+    return std::nullopt;
+  });
 }
 
 }  // namespace kontakt::server::handlers

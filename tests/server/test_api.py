@@ -3,12 +3,14 @@
 
 Submit -> poll -> download and open the HDF5; SSE replay and resume; bad decks (422 naming
 the line); oversized bodies (413); unknown jobs (404); auth on and off; 50 concurrent
-submissions; every JSON response checked against proto/openapi.yaml."""
+submissions; the dashboard's endpoints (queue, sweeps, resubmit, pages); every JSON response
+checked against proto/openapi.yaml."""
 import hashlib
 import io
 import json
 import socket
 import threading
+import time
 import unittest
 import zipfile
 
@@ -91,6 +93,61 @@ class ApiTest(unittest.TestCase):
         rest = self.d.sse(job2["id"], last_event_id=first[-1][0])
         self.assertEqual(rest[0][0], first[-1][0] + 1)
         self.assertEqual(rest[-1][2]["status"], "succeeded")
+
+    def test_sse_replays_a_long_history_at_once(self):
+        # More events than one write batch (500): the replay must not wait for new commits.
+        job = self.submit_ok(decks.beam(1, nlgeom=True, increments=400))
+        self.assertEqual(self.d.wait(job["id"], timeout=120)["status"], "succeeded")
+        start = time.monotonic()
+        events = self.d.sse(job["id"], timeout=60)
+        elapsed = time.monotonic() - start
+        self.assertGreater(len(events), 800)
+        self.assertEqual([e[0] for e in events], list(range(1, len(events) + 1)))
+        self.assertLess(elapsed, 3.0, f"replay of {len(events)} events took {elapsed:.1f} s")
+
+    def test_queue_sweeps_and_resubmit(self):
+        status, _, queue = self.d.json("GET", "/v1/queue")
+        self.assertEqual(status, 200)
+        validate(queue, "Queue")
+        self.assertEqual(queue["workers"], 2)
+        ids = [self.submit_ok(decks.beam(2, load=-10.0 * k), f"label=e2eload%3D{k}&label=case%3Dq")["id"]
+               for k in (1, 2, 4)]
+        for job_id in ids:
+            self.assertEqual(self.d.wait(job_id)["status"], "succeeded")
+        status, _, sweeps = self.d.json("GET", "/v1/sweeps")
+        validate(sweeps, "SweepList")
+        self.assertIn({"key": "e2eload", "jobs": 3},
+                      [{k: s[k] for k in ("key", "jobs")} for s in sweeps["sweeps"]])
+        status, _, sweep = self.d.json("GET", "/v1/sweeps/e2eload")
+        self.assertEqual(status, 200)
+        validate(sweep, "Sweep")
+        rows = {r["value"]: r for r in sweep["jobs"]}
+        self.assertEqual(set(rows), {"1", "2", "4"})
+        # Linear: the tip displacement scales with the load.
+        self.assertAlmostEqual(rows["4"]["max_displacement"] / rows["1"]["max_displacement"], 4.0, places=6)
+        status, _, page = self.d.json("GET", "/v1/sweeps/e2eload?limit=2")
+        validate(page, "Sweep")
+        self.assertIsNotNone(page["next_page_token"])
+        status, _, problem = self.d.json("GET", "/v1/sweeps/no%20such")
+        self.assertEqual(status, 400)
+        validate(problem, "Problem")
+
+        status, headers, again = self.d.json("POST", f"/v1/jobs/{ids[0]}/resubmit",
+                                             json.dumps({"scheme": "gc3", "name": "again"}).encode(),
+                                             {"Content-Type": "application/json"})
+        self.assertEqual(status, 201, again)
+        validate(again, "Job")
+        self.assertEqual((again["scheme"], again["name"], again["labels"]["e2eload"]), ("gc3", "again", "1"))
+        self.assertEqual(headers["location"], "/v1/jobs/" + again["id"])
+        done = self.d.wait(again["id"])
+        self.assertEqual(done["status"], "succeeded")
+        _, _, s0 = self.d.json("GET", f"/v1/jobs/{ids[0]}/summary")
+        _, _, s1 = self.d.json("GET", f"/v1/jobs/{again['id']}/summary")
+        self.assertEqual(s0["max_displacement"], s1["max_displacement"])
+        status, _, problem = self.d.json("POST", f"/v1/jobs/{ids[0]}/resubmit", b'{"scheme": "gc5"}',
+                                         {"Content-Type": "application/json"})
+        self.assertEqual(status, 400)
+        validate(problem, "Problem")
 
     def test_bad_decks_are_422_naming_the_line(self):
         good = decks.tiny().splitlines()
@@ -218,9 +275,18 @@ class ApiTest(unittest.TestCase):
         status, _, spec = self.d.json("GET", "/v1/openapi.json")
         self.assertEqual(spec["openapi"], "3.1.0")
         self.assertEqual(set(spec["paths"]), set(__import__("openapi_check").SPEC["paths"]))
-        status, headers, page = self.d.request("GET", "/")
+        for path, script in (("/", b"job_list.js"), ("/jobs/" + "0" * 32, b"job_page.js"),
+                             ("/sweeps?label=x", b"sweeps_page.js")):
+            status, headers, page = self.d.request("GET", path)
+            self.assertEqual(status, 200, path)
+            self.assertTrue(headers["content-type"].startswith("text/html"), path)
+            self.assertIn("default-src 'self'", headers["content-security-policy"])
+            self.assertIn(script, page)
+        status, headers, module = self.d.request("GET", "/assets/uPlot.esm.js")
         self.assertEqual(status, 200)
-        self.assertIn(b"kontaktd", page)
+        self.assertTrue(headers["content-type"].startswith("text/javascript"))
+        self.assertEqual(self.d.request("GET", "/assets/uPlot.esm.js",
+                                        headers={"If-None-Match": headers["etag"]})[0], 304)
 
 
 class AuthTest(unittest.TestCase):
@@ -244,6 +310,16 @@ class AuthTest(unittest.TestCase):
             self.assertEqual(d.submit(decks.tiny())[0], 401)
             self.assertEqual(d.wait(job["id"], headers=auth)["status"], "succeeded")
             self.assertEqual(d.json("GET", "/healthz")[0], 200)  # liveness stays open
+            # The token is taken from the header only, never from the URL.
+            self.assertEqual(d.json("GET", "/v1/jobs?access_token=alpha-token")[0], 401)
+            self.assertEqual(d.request("GET", f"/v1/jobs/{job['id']}/events?access_token=alpha-token")[0], 401)
+            # The dashboard's pages and assets hold no data and load without it; its API calls
+            # carry the header.
+            for path in ("/", f"/jobs/{job['id']}", "/sweeps", "/assets/job_page.js"):
+                self.assertEqual(d.request("GET", path)[0], 200, path)
+            for path in ("/v1/queue", "/v1/sweeps", f"/v1/jobs/{job['id']}/summary"):
+                self.assertEqual(d.json("GET", path)[0], 401, path)
+                self.assertEqual(d.json("GET", path, headers=auth)[0], 200, path)
         finally:
             d.stop()
 

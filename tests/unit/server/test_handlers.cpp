@@ -121,6 +121,9 @@ TEST_F(HandlerTest, JsonSubmission) {
   const auto r = submit(request.dump(), {}, {{"content-type", "application/json"}});
   ASSERT_EQ(r.status, 201) << r.body;
   EXPECT_EQ(body(r)["labels"]["k"], "v");
+  // Labels from the query and from the body add up.
+  const auto both = submit(request.dump(), {{"label", "q=1"}}, {{"content-type", "application/json"}});
+  EXPECT_EQ(body(both)["labels"], json({{"k", "v"}, {"q", "1"}}));
   EXPECT_EQ(submit("[1]", {}, {{"content-type", "application/json"}}).status, 400);
 }
 
@@ -275,13 +278,205 @@ TEST_F(HandlerTest, DownloadsWithEtagAndRange) {
 }
 
 TEST_F(HandlerTest, BearerTokens) {
-  router.require_tokens({"s3cret"}, {"/healthz"});
+  router.require_tokens({"s3cret"});
   EXPECT_EQ(call("GET", "/v1/jobs").status, 401);
   EXPECT_TRUE(call("GET", "/v1/jobs").header("WWW-Authenticate"));
   EXPECT_EQ(call("GET", "/v1/jobs", "", {{"authorization", "Bearer wrong"}}).status, 401);
   EXPECT_EQ(call("GET", "/v1/jobs", "", {{"authorization", "Bearer s3cret"}}).status, 200);
-  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"access_token", "s3cret"}}).status, 200);
-  EXPECT_EQ(call("GET", "/healthz").status, 200);
+  // Never from the URL: it would end up in logs, proxies and browser history.
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"access_token", "s3cret"}}).status, 401);
+  EXPECT_EQ(call("GET", "/v1/queue").status, 401);
+  EXPECT_EQ(call("GET", "/v1/sweeps").status, 401);
+  EXPECT_EQ(call("GET", "/v1/openapi.json").status, 401);
+  EXPECT_EQ(call("GET", "/nothing/here").status, 401) << "unknown paths do not reveal themselves";
+  // Liveness and the dashboard's pages and assets hold no data: open.
+  for (const std::string& path : std::vector<std::string>{"/healthz", "/", "/jobs/" + std::string(32, 'a'),
+                                                         "/sweeps", "/assets/job_page.js", "/assets/uPlot.esm.js"})
+    EXPECT_EQ(call("GET", path).status, 200) << path;
+  EXPECT_EQ(call("POST", "/").status, 405);
+}
+
+TEST_F(HandlerTest, DashboardPagesAndAssets) {
+  for (const std::string& path : std::vector<std::string>{"/", "/jobs/" + std::string(32, 'b'), "/sweeps"}) {
+    const auto page = call("GET", path);
+    ASSERT_EQ(page.status, 200) << path;
+    EXPECT_EQ(page.content_type, "text/html; charset=utf-8") << path;
+    const auto csp = page.header("Content-Security-Policy");
+    ASSERT_TRUE(csp) << path;
+    EXPECT_NE(csp->find("default-src 'self'"), std::string::npos);
+    EXPECT_NE(page.body.find("/assets/"), std::string::npos) << path;
+  }
+  EXPECT_NE(call("GET", "/").body.find("job_list.js"), std::string::npos);
+  EXPECT_NE(call("GET", "/jobs/" + std::string(32, 'b')).body.find("job_page.js"), std::string::npos);
+  EXPECT_NE(call("GET", "/sweeps").body.find("sweeps_page.js"), std::string::npos);
+  const auto script = call("GET", "/assets/job_page.js");
+  EXPECT_EQ(script.content_type, "text/javascript; charset=utf-8");
+  const auto etag = script.header("ETag");
+  ASSERT_TRUE(etag);
+  EXPECT_EQ(script.header("Cache-Control"), "no-cache");
+  EXPECT_EQ(call("GET", "/assets/job_page.js", "", {{"if-none-match", *etag}}).status, 304);
+  EXPECT_EQ(call("GET", "/assets/job_page.js", "", {{"if-none-match", "\"old\""}}).status, 200);
+  const auto uplot = call("GET", "/assets/uPlot.esm.js");
+  EXPECT_EQ(uplot.status, 200);
+  EXPECT_NE(uplot.body.find("export"), std::string::npos) << "uPlot's ES module, embedded";
+  EXPECT_EQ(call("GET", "/assets/uPlot.min.css").content_type, "text/css; charset=utf-8");
+  EXPECT_EQ(call("GET", "/assets/nothing.js").status, 404);
+  EXPECT_EQ(call("GET", "/assets/v1/openapi.json").status, 404);
+  EXPECT_EQ(call("GET", "/assets/..").status, 404);
+}
+
+TEST_F(HandlerTest, QueueCountsJobsAndWorkers) {
+  const std::string a = body(submit(testing::cube_deck()))["id"];
+  submit(testing::cube_deck());
+  submit(testing::cube_deck());
+  store.claim_next();
+  call("POST", "/v1/jobs/" + a + "/cancel");  // a runs: canceling
+  const std::string c = body(submit(testing::cube_deck()))["id"];
+  call("POST", "/v1/jobs/" + c + "/cancel");  // queued: canceled at once
+  const json q = body(call("GET", "/v1/queue"));
+  EXPECT_EQ(q["queued"], 2);
+  EXPECT_EQ(q["running"], 0);
+  EXPECT_EQ(q["canceling"], 1);
+  EXPECT_EQ(q["finished"], json({{"succeeded", 0}, {"failed", 0}, {"canceled", 1}}));
+  EXPECT_EQ(q["workers"], 2);
+  EXPECT_EQ(q["busy_workers"], 0);
+}
+
+TEST_F(HandlerTest, SweepsGroupJobsByLabelKey) {
+  std::vector<std::string> ids;
+  for (const char* load : {"1", "2.5", "10"})
+    ids.push_back(body(submit(testing::cube_deck(), {{"label", std::string("load=") + load},
+                                                     {"label", "case=beam"}}))["id"]);
+  submit(testing::cube_deck(), {{"label", "case=other"}});
+  submit(testing::cube_deck());
+  const json list = body(call("GET", "/v1/sweeps"));
+  ASSERT_EQ(list["sweeps"].size(), 2u);
+  EXPECT_EQ(list["sweeps"][0]["key"], "case");  // its newest job is the newest labelled one
+  EXPECT_EQ(list["sweeps"][0]["jobs"], 4);
+  EXPECT_EQ(list["sweeps"][1]["key"], "load");
+  EXPECT_EQ(list["sweeps"][1]["jobs"], 3);
+
+  const json sweep = body(call("GET", "/v1/sweeps/load"));
+  EXPECT_EQ(sweep["key"], "load");
+  ASSERT_EQ(sweep["jobs"].size(), 3u);
+  EXPECT_EQ(sweep["jobs"][0]["id"], ids[2]);  // newest first
+  EXPECT_EQ(sweep["jobs"][0]["value"], "10");
+  EXPECT_EQ(sweep["jobs"][2]["value"], "1");
+  EXPECT_EQ(sweep["jobs"][0]["status"], "queued");
+  EXPECT_TRUE(sweep["jobs"][0]["max_displacement"].is_null());
+  EXPECT_TRUE(sweep["jobs"][0]["finished"].is_null());
+  EXPECT_TRUE(sweep["next_page_token"].is_null());
+
+  // A finished job's summary figures appear in its row.
+  store.claim_next();
+  JobSummary summary;
+  summary.iterations = 3;
+  summary.wall_time = 0.5;
+  summary.max_displacement = 0.25;
+  ASSERT_TRUE(store.finish_job(ids[0], JobStatus::Succeeded, "", "", summary, {}));
+  const json rows = body(call("GET", "/v1/sweeps/load"))["jobs"];
+  EXPECT_EQ(rows[2]["status"], "succeeded");
+  EXPECT_EQ(rows[2]["iterations"], 3);
+  EXPECT_EQ(rows[2]["max_displacement"], 0.25);
+  EXPECT_TRUE(rows[2]["max_contact_pressure"].is_null());
+
+  const json p1 = body(call("GET", "/v1/sweeps/load", "", {}, {{"limit", "2"}}));
+  ASSERT_EQ(p1["jobs"].size(), 2u);
+  ASSERT_TRUE(p1["next_page_token"].is_string());
+  const json p2 = body(call("GET", "/v1/sweeps/load", "", {}, {{"page_token", p1["next_page_token"]}}));
+  ASSERT_EQ(p2["jobs"].size(), 1u);
+  EXPECT_EQ(p2["jobs"][0]["id"], ids[0]);
+
+  // Narrowed by another label: one design loop's jobs among several.
+  const json beams = body(call("GET", "/v1/sweeps/load", "", {}, {{"label", "case=beam"}}));
+  EXPECT_EQ(beams["jobs"].size(), 3u);
+  EXPECT_TRUE(body(call("GET", "/v1/sweeps/load", "", {}, {{"label", "case=other"}}))["jobs"].empty());
+  EXPECT_EQ(body(call("GET", "/v1/sweeps/load", "", {}, {{"label", "case"}}))["field"], "label");
+
+  EXPECT_TRUE(body(call("GET", "/v1/sweeps/nothing"))["jobs"].empty());
+  EXPECT_EQ(body(call("GET", "/v1/sweeps/bad key"))["field"], "key");
+  EXPECT_EQ(body(call("GET", "/v1/sweeps/load", "", {}, {{"limit", "1001"}}))["field"], "limit");
+  EXPECT_EQ(body(call("GET", "/v1/sweeps/load", "", {}, {{"page_token", "1.x"}}))["field"], "page_token");
+}
+
+TEST_F(HandlerTest, PageTokensOutOfRangeAre400NotAnError) {
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"page_token", std::string(19, '9') + "." + std::string(32, 'a')}}).status, 400);
+  EXPECT_EQ(call("GET", "/v1/jobs", "", {}, {{"page_token", "12." + std::string(32, 'a')}}).status, 200);
+}
+
+TEST_F(HandlerTest, ResubmitCopiesTheInputWithOptions) {
+  const std::string main = "*INCLUDE, INPUT=mesh/nodes.inp\n";
+  const std::string deck = testing::cube_deck();
+  const std::size_t nodes_end = deck.find("*ELEMENT");
+  const std::string zip = testing::make_zip({{"model.inp", main + deck.substr(nodes_end)},
+                                             {"mesh/nodes.inp", deck.substr(0, nodes_end)}}, dir.path());
+  const auto first = submit(zip, {{"name", "cube"}, {"label", "load=3"}, {"scheme", "lgc3"}},
+                            {{"content-type", "application/zip"}});
+  ASSERT_EQ(first.status, 201) << first.body;
+  const std::string source = body(first)["id"];
+
+  const auto same = call("POST", "/v1/jobs/" + source + "/resubmit");
+  ASSERT_EQ(same.status, 201) << same.body;
+  const json copy = body(same);
+  EXPECT_NE(copy["id"], source);
+  EXPECT_EQ(copy["name"], "cube");
+  EXPECT_EQ(copy["scheme"], "lgc3");
+  EXPECT_EQ(copy["labels"]["load"], "3");
+  EXPECT_EQ(copy["main"], "model.inp");
+  EXPECT_EQ(copy["status"], "queued");
+  EXPECT_EQ(same.header("Location"), "/v1/jobs/" + copy["id"].get<std::string>());
+  EXPECT_TRUE(std::filesystem::exists(files.input_dir(copy["id"]) / "mesh" / "nodes.inp"));
+
+  const auto other = call("POST", "/v1/jobs/" + source + "/resubmit",
+                          R"({"scheme": "gc7", "name": "cube gc7", "labels": {"load": "4"}})",
+                          {{"content-type", "application/json"}});
+  ASSERT_EQ(other.status, 201) << other.body;
+  EXPECT_EQ(body(other)["scheme"], "gc7");
+  EXPECT_EQ(body(other)["name"], "cube gc7");
+  EXPECT_EQ(body(other)["labels"], json({{"load", "4"}}));
+  const auto own = call("POST", "/v1/jobs/" + source + "/resubmit", R"({"scheme": null})",
+                        {{"content-type", "application/json"}});
+  ASSERT_EQ(own.status, 201);
+  EXPECT_TRUE(body(own)["scheme"].is_null());
+  EXPECT_EQ(control.queued, 4);
+
+  // The same key replays the job; another body under it is refused.
+  const std::map<std::string, std::string> keyed{{"content-type", "application/json"},
+                                                 {"idempotency-key", "r1"}};
+  const auto k1 = call("POST", "/v1/jobs/" + source + "/resubmit", R"({"scheme": "nts"})", keyed);
+  const auto k2 = call("POST", "/v1/jobs/" + source + "/resubmit", R"({"scheme": "nts"})", keyed);
+  ASSERT_EQ(k2.status, 201);
+  EXPECT_EQ(body(k2)["id"], body(k1)["id"]);
+  EXPECT_EQ(k2.header("Idempotent-Replayed"), "true");
+  EXPECT_EQ(call("POST", "/v1/jobs/" + source + "/resubmit", R"({"scheme": "gc1"})", keyed).status, 422);
+  EXPECT_EQ(control.queued, 5);
+
+  const auto post = [&](const std::string& text) {
+    return call("POST", "/v1/jobs/" + source + "/resubmit", text, {{"content-type", "application/json"}});
+  };
+  EXPECT_EQ(body(post(R"({"scheme": "gc5"})"))["field"], "scheme");
+  EXPECT_EQ(body(post(R"({"scheme": 7})"))["field"], "scheme");
+  EXPECT_EQ(body(post(R"({"name": ""})"))["field"], "name");
+  EXPECT_EQ(body(post(R"({"labels": {"bad key": "1"}})"))["field"], "labels");
+  EXPECT_EQ(body(post(R"({"deck": "*NODE"})"))["field"], "deck");
+  EXPECT_EQ(body(post("[1]"))["field"], "body");
+  EXPECT_EQ(call("POST", "/v1/jobs/" + source + "/resubmit", "scheme=gc7",
+                 {{"content-type", "text/plain"}}).status, 415);
+  EXPECT_EQ(call("POST", "/v1/jobs/" + std::string(32, 'c') + "/resubmit").status, 404);
+  EXPECT_EQ(control.queued, 5) << "refused resubmissions queue nothing";
+  EXPECT_EQ(files.folder_ids().size(), 5u) << "and leave no folder";
+}
+
+TEST_F(HandlerTest, ResubmitReparsesTheDeck) {
+  const std::string source = body(submit(testing::cube_deck()))["id"];
+  // The input changed under the job (a disk fault, a hand edit): the copy is parsed again.
+  std::ofstream(files.input_dir(source) / "deck.inp") << "*FROBNICATE\n";
+  const auto r = call("POST", "/v1/jobs/" + source + "/resubmit");
+  EXPECT_EQ(r.status, 422);
+  EXPECT_EQ(body(r)["errors"][0]["keyword"], "*FROBNICATE");
+  std::filesystem::remove_all(files.input_dir(source));
+  EXPECT_EQ(call("POST", "/v1/jobs/" + source + "/resubmit").status, 409);
+  EXPECT_EQ(files.folder_ids().size(), 1u);
 }
 
 TEST_F(HandlerTest, ServiceEndpoints) {
@@ -295,6 +490,7 @@ TEST_F(HandlerTest, ServiceEndpoints) {
   EXPECT_TRUE(spec["components"]["schemas"].contains("Job"));
   const auto page = call("GET", "/");
   EXPECT_EQ(page.content_type.rfind("text/html", 0), 0u);
+  EXPECT_EQ(call("GET", "/v1/openapi.json").header("ETag").has_value(), true);
 }
 
 }  // namespace kontakt::server

@@ -168,6 +168,31 @@ TEST_F(JobStoreTest, ListPagesNewestFirstWithFilters) {
   EXPECT_TRUE(store.list_jobs(labelled).jobs.empty());
 }
 
+TEST_F(JobStoreTest, LabelKeysFindSweeps) {
+  NewJob a = new_job("a"), b = new_job("b"), c = new_job("c");
+  a.labels = {{"load", "1"}, {"mesh", "fine"}};
+  b.labels = {{"load", "2"}};
+  c.labels = {};
+  for (const NewJob& j : {a, b, c}) store.insert_job(j);
+  JobQuery with_load;
+  with_load.label_keys = {"load"};
+  const JobPage page = store.list_jobs(with_load);
+  ASSERT_EQ(page.jobs.size(), 2u);
+  EXPECT_EQ(page.jobs[0].id, b.id);  // newest first
+  EXPECT_EQ(page.jobs[1].id, a.id);
+  with_load.label_keys = {"load", "mesh"};
+  ASSERT_EQ(store.list_jobs(with_load).jobs.size(), 1u);
+  with_load.label_keys = {"lo"};  // a key, not a prefix
+  EXPECT_TRUE(store.list_jobs(with_load).jobs.empty());
+  const auto keys = store.label_keys();
+  ASSERT_EQ(keys.size(), 2u);
+  EXPECT_EQ(keys[0].key, "load");  // its newest job is newer than mesh's
+  EXPECT_EQ(keys[0].jobs, 2);
+  EXPECT_EQ(keys[0].latest_ms, store.find_job(b.id)->created_ms);
+  EXPECT_EQ(keys[1].key, "mesh");
+  EXPECT_EQ(keys[1].jobs, 1);
+}
+
 TEST_F(JobStoreTest, EventsCarrySequenceRunAndProgress) {
   const auto job = store.insert_job(new_job("a")).second;
   store.claim_next();
