@@ -305,6 +305,7 @@ void ContactSystem::Sums::add(const Sums& o) {
   force.abs_sum += o.force.abs_sum;
   force.components += o.force.components;
   active += o.active;
+  pressing += o.pressing;
   contact_force += o.contact_force;
   stabilisation_force += o.stabilisation_force;
   stabilisation_energy += o.stabilisation_energy;
@@ -362,7 +363,10 @@ ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool
     s.energy = r.pressure.energy * s.area;
     add(r, p.master);
     ++sums.active;
-    sums.contact_force += std::abs(s.pressure) * s.area;
+    if (s.pressure > 0) {
+      ++sums.pressing;
+      sums.contact_force += s.pressure * s.area;
+    }
     return true;
   };
   for (Point& pt : unit.points) {
@@ -379,7 +383,10 @@ ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool
       sums.spring_stiffness += spring_law.stiffness * spring.area;
       spring_gap = r.gap + pt.frozen_gap;
     }
-    if (!contact_response(pt) && spring_gap > 0)
+    // Points that press carry the load; the others (open, or in a law's tension tail) still
+    // have to close.
+    contact_response(pt);
+    if (pt.trial.pressure <= 0 && spring_gap > 0)
       sums.min_open_gap = std::min(sums.min_open_gap, spring_gap);
   }
   return sums;
@@ -414,7 +421,7 @@ void ContactSystem::set_stabilisation(Real factor) {
 
 std::optional<Real> ContactSystem::approach_ratio() const {
   const Real closing = -sums_.stabilisation_pull;
-  if (sums_.active > 0 || closing <= 0 || sums_.spring_stiffness <= 0 ||
+  if (sums_.pressing > 0 || closing <= 0 || sums_.spring_stiffness <= 0 ||
       !std::isfinite(sums_.min_open_gap))
     return std::nullopt;
   const Real d = closing / sums_.spring_stiffness;

@@ -127,13 +127,14 @@ class ContactSystem {
   void set_stabilisation(Real factor);
   Real stabilisation() const { return stabilisation_; }
   /// The springs' energy at the last update, and the share of the normal force they carried
-  /// there (springs over springs plus contact pressures).
+  /// there (springs over springs plus compressive contact forces: a law's tension tail holds
+  /// nothing against a load that presses).
   Real stabilisation_energy() const { return sums_.stabilisation_energy; }
   Real stabilisation_share() const;
-  /// True when, at the last update, no point touched and the springs pulled the slave
+  /// True when, at the last update, no point pressed and the springs pulled the slave
   /// surfaces back towards their masters on balance: the loads move the bodies apart.
-  bool separating() const { return sums_.active == 0 && sums_.stabilisation_pull > 0; }
-  /// While no point touches and the springs are compressed (the bodies moved towards each
+  bool separating() const { return sums_.pressing == 0 && sums_.stabilisation_pull > 0; }
+  /// While no point presses and the springs are compressed (the bodies moved towards each
   /// other by their mean compression d): the ratio of spring factors d / (d + 1.2 g) that moves
   /// them about 1.2 times the smallest open gap g further under the same load. Else nullopt.
   std::optional<Real> approach_ratio() const;
@@ -219,7 +220,8 @@ class ContactSystem {
   struct Sums {
     ForceMeasure force;         ///< of the active points and the stabilisation springs
     int active = 0;
-    Real contact_force = 0;     ///< sum of |normal force| of the active points
+    int pressing = 0;           ///< active points in compression
+    Real contact_force = 0;     ///< sum of the compressive normal forces
     Real stabilisation_force = 0, stabilisation_energy = 0;
     Real stabilisation_pull = 0;  ///< sum of the springs' tensions (minus their compressions)
     Real spring_stiffness = 0;    ///< sum of the springs' k A

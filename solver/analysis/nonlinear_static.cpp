@@ -210,7 +210,7 @@ class NonlinearStatic {
     Attempt a = begin_attempt(sc);
     const VecX x_start = a.x, u_start = a.u;
     VecX x_saved, u_saved;  // the last converged stabilised level
-    std::string engaged_because;
+    std::string engaged_because, release_failure;
     const auto mode = options_.contact_stabilisation;
     if (!contact_.empty() && (mode == ContactStabilisation::Always ||
                               (mode == ContactStabilisation::Auto && retry_stabilised_)))
@@ -287,7 +287,13 @@ class NonlinearStatic {
         if (next == Next::GiveUp)
           verdict = failure(sc, "contact stabilisation: the springs still carry " +
                                     std::to_string(contact_.stabilisation_share()) +
-                                    " of the normal force at their last level");
+                                    " of the normal force at their last level" +
+                                    (release_failure.empty()
+                                         ? std::string()
+                                         : " (releasing them failed: " + release_failure +
+                                               "; a contact on too few points can leave the "
+                                               "bodies free to rock: refine the contact "
+                                               "surfaces or use a Gauss-Cut scheme)"));
       }
       if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
         verdict = judged_by_contact(sc, a.u);
@@ -299,7 +305,12 @@ class NonlinearStatic {
       }
       if (verdict.kind != nonlinear::Verdict::Kind::Cutback) continue;
       if (stabilisation_.releasing()) {
+        release_failure = verdict.reason;
         if (stabilisation_.failed() == Next::RestoreAndContinue) {
+          warn(sc.number, "increment " + std::to_string(increments_->increment_number()) +
+                              ": releasing the contact stabilisation failed (" + verdict.reason +
+                              "); back to its last level, with springs of " +
+                              std::to_string(stabilisation_.factor()) + " times the penalty");
           a.x = x_saved;
           a.u = u_saved;
           contact_.set_stabilisation(stabilisation_.factor());

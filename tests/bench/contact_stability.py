@@ -6,11 +6,12 @@ runs that did not converge and the mean number of Newton iterations.
 
 Variants: cube and punch (tests/contact_models/thesis_blocks.py, tables 3 and 4), each with
 C3D8 and C3D20 (--variants; C3D20R works too: cube_c3d20r). Mesh n x n x n per body (default
-16 as the thesis, --n).
+16 as the thesis; --n takes several sizes, each a variant of its own).
 Placements (seeded, --seed): rotation uniform in [0, 90) degrees (the footprint is square);
 then x and y uniform such that the rotated footprint stays MARGIN (0.02) inside the lower top
-face (thesis_blocks.lies_over_lower); z = 0 for the cube, the punch's default overlap
-(thesis_blocks.punch_overlap). Every variant uses the same placements.
+face (thesis_blocks.lies_over_lower); z = 0 for the cube, the thesis' overlap -0.0002 for the
+punch, or every height --z lists (negative: initial overlap, 0: touching, positive: a gap the
+load has to close; each a variant of its own). Every variant uses the same placements.
 Counting, identical for both solvers (tests/contact_models/solvers.py): a run converged when
 the solver says so (kontakt exit 0; ccx exit 0 with "Job finished"); its iterations are the
 sum of the .sta ITRS column over every attempt, cut-backs included. "mean iter" is the mean
@@ -28,9 +29,12 @@ Every run is listed in WORK/runs.csv (variant, placement, x, y, rotation, formul
 status, iterations, increments, wall time); the decks stay in WORK/VARIANT/pNNN/.
 
   contact_stability.py --kontakt EXE [--placements 50] [--n 16] [--schemes ...] [--jobs 2]
-  contact_stability.py --smoke --kontakt EXE --check convergence   # CI: 5 placements, coarse
+  contact_stability.py --smoke --kontakt EXE --check convergence   # CI: 4 placements, coarse
                                                                    # meshes, nts gauss lgc7
   contact_stability.py --placements 20 --n 8      # ccx only (no --kontakt)
+  contact_stability.py --kontakt EXE --variants punch_c3d8 cube_c3d8 --n 8 --schemes lgc7 \
+      --z -2e-4 0 1e-4 1e-3 1e-2                   # open gaps, touching, overlap (issue 9)
+  contact_stability.py --kontakt EXE --variants punch_c3d8 --n 4 6 8 12 16 --schemes lgc7
 """
 import argparse
 import concurrent.futures
@@ -57,8 +61,8 @@ VARIANTS = {  # name -> (model builder, upper body side, element)
     "punch_c3d20r": (thesis_blocks.punch, thesis_blocks.PUNCH_SIDE, "C3D20R"),
 }
 DEFAULT_VARIANTS = ("cube_c3d8", "cube_c3d20", "punch_c3d8", "punch_c3d20")
-SMOKE = dict(placements=5, n={"C3D8": 4, "C3D20": 3, "C3D20R": 3}, schemes=("nts", "gauss", "lgc7"),
-             timeout=120)
+SMOKE = dict(placements=4, n={"C3D8": 4, "C3D20": 3, "C3D20R": 3}, schemes=("nts", "gauss", "lgc7"),
+             z=(None, 1e-3), timeout=120)
 GOAL_SCHEME, GOAL_REFERENCE = "lgc7", "SURFACE TO SURFACE"
 
 
@@ -82,28 +86,32 @@ def summary(runs):
     return len(runs), failed, (sum(done) / len(done) if done else None), max(done, default=None)
 
 
-def run_variant(name, args, columns, pool, writer):
+def run_variant(name, n, z, args, columns, pool, writer):
+    """Every placement of one variant at mesh n and height z (None: the body's default), by
+    every column; (variant label, {column: [runs]})."""
     make, side, element = VARIANTS[name]
-    n = args.n or (SMOKE["n"][element] if args.smoke else 16)
-    first = make(element, n=n)
+    height = {} if z is None else {"z": z}
+    label = f"{name} {n}^3" + ("" if z is None else f" z={z:g}")
+    first = make(element, n=n, **height)
     problems = mesh_checks.check_model(first)
     if problems:
-        raise RuntimeError(f"{name}: invalid mesh: {problems[0]}")
+        raise RuntimeError(f"{label}: invalid mesh: {problems[0]}")
     tasks = []
     for index, (x, y, rotation) in enumerate(placements(args.placements, args.seed, side)):
-        model = make(element, n=n, x=x, y=y, rotation=rotation)
-        folder = os.path.join(args.work, name, f"p{index:03d}")
+        model = make(element, n=n, x=x, y=y, rotation=rotation, **height)
+        folder = os.path.join(args.work, label.replace(" ", "_").replace("^", ""), f"p{index:03d}")
         decks = {t: solvers.write_deck(model, folder, t, name) for t in solvers.CCX_TYPES}
-        for label, column in columns:
+        for column_label, column in columns:
             future = pool.submit(solvers.solve, decks, folder, column, args.kontakt, args.timeout)
-            tasks.append((index, x, y, rotation, label, future))
-    by_column = {label: [] for label, _ in columns}
-    for index, x, y, rotation, label, future in tasks:
+            tasks.append((index, x, y, rotation, column_label, future))
+    by_column = {column_label: [] for column_label, _ in columns}
+    for index, x, y, rotation, column_label, future in tasks:
         run = future.result()
-        by_column[label].append(run)
-        writer.writerow([name, index, f"{x:.6f}", f"{y:.6f}", f"{rotation:.3f}", label,
-                         run.status, run.iterations, run.increments, f"{run.wall:.2f}"])
-    return n, by_column
+        by_column[column_label].append(run)
+        writer.writerow([name, n, "" if z is None else z, index, f"{x:.6f}", f"{y:.6f}",
+                         f"{rotation:.3f}", column_label, run.status, run.iterations,
+                         run.increments, f"{run.wall:.2f}"])
+    return label, by_column
 
 
 def main():
@@ -111,13 +119,16 @@ def main():
     solvers.add_solver_options(p, solvers.SCHEMES)
     p.add_argument("--variants", nargs="+", default=list(DEFAULT_VARIANTS), choices=sorted(VARIANTS))
     p.add_argument("--placements", type=int, default=50)
-    p.add_argument("--n", type=int, help="elements per direction and body (default 16; smoke 4 "
-                                         "for C3D8, 3 for C3D20)")
+    p.add_argument("--n", type=int, nargs="+", help="elements per direction and body (default "
+                                                    "16; smoke 4 for C3D8, 3 for C3D20)")
+    p.add_argument("--z", type=float, nargs="+", help="heights of the upper body's lowest point "
+                                                     "above the lower top (default: the body's)")
     p.add_argument("--seed", type=int, default=2024)
     p.add_argument("--jobs", type=int, default=2, help="runs in parallel (each single-threaded)")
     p.add_argument("--timeout", type=int, default=1800, help="seconds per run")
     p.add_argument("--smoke", action="store_true",
-                   help="CI size: 5 placements, coarse meshes, schemes nts gauss lgc7")
+                   help="CI size: 4 placements, coarse meshes, the default height and a gap of "
+                        "1e-3, schemes nts gauss lgc7")
     p.add_argument("--check", choices=("none", "convergence", "goal"), default="none",
                    help="exit 1 when lgc7 does not converge everywhere (convergence), or when "
                         "the whole goal is not met (goal)")
@@ -128,6 +139,7 @@ def main():
         args.timeout = min(args.timeout, SMOKE["timeout"])
         if args.schemes == list(solvers.SCHEMES):
             args.schemes = list(SMOKE["schemes"])
+        args.z = args.z or list(SMOKE["z"])
     args.work = os.path.abspath(args.work)
     os.makedirs(args.work, exist_ok=True)
     columns = solvers.columns(args.schemes, args.kontakt)
@@ -136,19 +148,23 @@ def main():
     with open(os.path.join(args.work, "runs.csv"), "w", newline="") as f, \
             concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         writer = csv.writer(f)
-        writer.writerow(["variant", "placement", "x", "y", "rotation", "formulation", "status",
-                         "iterations", "increments", "wall_s"])
+        writer.writerow(["variant", "n", "z", "placement", "x", "y", "rotation", "formulation",
+                         "status", "iterations", "increments", "wall_s"])
         for name in args.variants:
-            results[name] = run_variant(name, args, columns, pool, writer)
+            element = VARIANTS[name][2]
+            for n in args.n or [SMOKE["n"][element] if args.smoke else 16]:
+                for z in args.z or [None]:
+                    label, by_column = run_variant(name, n, z, args, columns, pool, writer)
+                    results[label] = by_column
     print(f"stability: {args.placements} placements (seed {args.seed}), "
           f"{time.perf_counter() - start:.0f} s, runs in {args.work}/runs.csv")
-    print(f"{'variant':14s} {'mesh':5s} {'formulation':24s} {'runs':>4s} {'not conv.':>9s} "
+    print(f"{'variant':28s} {'formulation':24s} {'runs':>4s} {'not conv.':>9s} "
           f"{'mean iter':>9s} {'max iter':>8s}")
     stats = {name: {label: summary(runs) for label, runs in by_column.items()}
-             for name, (_, by_column) in results.items()}
-    for name, (n, _) in results.items():
+             for name, by_column in results.items()}
+    for name in results:
         for label, (count, failed, mean, largest) in stats[name].items():
-            print(f"{name:14s} {n:>2d}^3  {label:24s} {count:4d} {failed:8.1f}% "
+            print(f"{name:28s} {label:24s} {count:4d} {failed:8.1f}% "
                   f"{'-' if mean is None else f'{mean:.2f}':>9s} {'-' if largest is None else largest:>8}")
     verdicts = [v for v in (report_goal(name, stats[name]) for name in results) if v]
     converged = bool(verdicts) and all(c for c, _ in verdicts)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes one generated contact deck (cube, punch, patch or hertz; see README.md) and checks
+"""Writes one generated contact deck (cube, punch, patch, hertz or sphere; see README.md) and checks
 its meshes (mesh_checks.check_model) before writing; exit code 1 when a check fails.
 
   generate.py cube  OUT.inp [--element C3D8] [--n 16] [--x X --y Y --z Z --rotation DEG]
@@ -7,6 +7,7 @@ its meshes (mesh_checks.check_model) before writing; exit code 1 when a check fa
   generate.py patch OUT.inp [--upper C3D10 --lower C3D20 --n-upper 2 --n-lower 5
                              --slave upper|lower --distortion D --seed S]
   generate.py hertz OUT.inp [--element C3D8 --level 1|2|3]
+  generate.py sphere OUT.inp [--element C3D8 --ratio 20 --increments 6]
 common: --type sts|nts (*CONTACT PAIR TYPE=SURFACE TO SURFACE | NODE TO SURFACE, default sts)
 """
 import argparse
@@ -15,6 +16,7 @@ import sys
 sys.dont_write_bytecode = True  # keep the source tree clean
 
 import hertz  # noqa: E402
+import hertz_sphere  # noqa: E402
 import mesh_checks  # noqa: E402
 import patch  # noqa: E402
 import thesis_blocks  # noqa: E402
@@ -35,6 +37,8 @@ def build(args):
     if args.model == "patch":
         return patch.patch(args.upper, args.lower, args.n_upper, args.n_lower, args.slave,
                            args.distortion, args.seed, contact_type)
+    if args.model == "sphere":
+        return hertz_sphere.hertz_sphere(args.element, args.ratio, args.increments, contact_type)
     return hertz.hertz(args.element, args.level, contact_type)
 
 
@@ -48,7 +52,7 @@ def parser():
         s.add_argument("--n-upper", type=int, help="upper body (default: --n)")
         s.add_argument("--x", type=float, default=0.0)
         s.add_argument("--y", type=float, default=0.0)
-        s.add_argument("--z", type=float, help="cube 0; punch: thesis_blocks.punch_overlap (-0.0002 at 16^3)")
+        s.add_argument("--z", type=float, help="cube 0; punch: the thesis' -0.0002")
         s.add_argument("--rotation", type=float, default=0.0, help="degrees about z")
         s.add_argument("--nlgeom", action="store_true")
     s = sub.add_parser("patch")
@@ -62,6 +66,10 @@ def parser():
     s = sub.add_parser("hertz")
     s.add_argument("--element", default="C3D8")
     s.add_argument("--level", type=int, choices=(1, 2, 3), default=1)
+    s = sub.add_parser("sphere")
+    s.add_argument("--element", default="C3D8")
+    s.add_argument("--ratio", type=float, default=20, help="a / h at the contact")
+    s.add_argument("--increments", type=int, default=6)
     for s in sub.choices.values():
         s.add_argument("out", help="deck to write (NAME.inp)")
         s.add_argument("--type", choices=sorted(CONTACT_TYPE), default="sts")

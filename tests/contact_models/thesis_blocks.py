@@ -87,21 +87,15 @@ def cube(element="C3D8", n=16, n_upper=None, x=0.0, y=0.0, z=0.0, rotation=0.0,
                     rotation, contact_type, nlgeom, note="upper cube 0.5")
 
 
-def punch_overlap(n_upper):
-    """Default z of the punch: the thesis' -0.0002 (16^3 upper mesh), or, on coarser upper
-    meshes, minus the sphere's rise half an element from the centre line, so that the
-    integration points of the central slave faces start in contact (with -0.0002 a 4^3 upper
-    mesh starts with no active point, and the upper body has no support in z)."""
-    r = PUNCH_SIDE / n_upper / 2
-    return -max(0.0002, PUNCH_RADIUS - math.sqrt(PUNCH_RADIUS ** 2 - r * r))
+THESIS_OVERLAP = -0.0002  # table 4: the punch's initial overlap
 
 
 def punch(element="C3D8", n=16, n_upper=None, x=0.0, y=0.0, z=None, rotation=0.0,
           contact_type="SURFACE TO SURFACE", nlgeom=False, upper_element=None):
     """Thesis punch: 0.3826 block with a spherical bottom of radius 0.5 (table 4); z defaults
-    to punch_overlap(n_upper): a small initial overlap that ensures contact."""
+    to the thesis' overlap -0.0002."""
     n_upper = n_upper or n
-    z = punch_overlap(n_upper) if z is None else z
+    z = THESIS_OVERLAP if z is None else z
     return _stacked("punch", PUNCH_SIDE, element, upper_element, n, n_upper, x, y, z,
                     rotation, contact_type, nlgeom,
                     shaped=lambda m: _spherical_bottom(m, PUNCH_SIDE, PUNCH_RADIUS),
