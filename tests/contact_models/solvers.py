@@ -99,8 +99,9 @@ def run_ccx(deck_path, timeout=DEFAULT_TIMEOUT, threads=1):
                "" if converged else _message(log))
 
 
-def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, threads=1):
-    """kontakt solve DECK -o OUT_DIR --scheme SCHEME --threads N --quiet."""
+def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, threads=1,
+                extra_args=()):
+    """kontakt solve DECK -o OUT_DIR --scheme SCHEME --threads N --quiet EXTRA_ARGS."""
     deck_path = os.path.abspath(deck_path)
     name = os.path.basename(deck_path)[:-4]
     os.makedirs(out_dir, exist_ok=True)
@@ -108,6 +109,7 @@ def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, thread
            "--threads", str(threads)]
     if scheme:
         cmd += ["--scheme", scheme]
+    cmd += list(extra_args)
     env = dict(os.environ, OPENBLAS_NUM_THREADS=str(threads))
     log = os.path.join(out_dir, name + ".kontakt.log")
     wall, peak, rc = timed_run(cmd, out_dir, log, timeout, env)
