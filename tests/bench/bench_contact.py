@@ -4,7 +4,14 @@
             never copied): two blocks, 8500 C3D8, surface to surface, K = 1e15;
   cube      the thesis cube (tests/contact_models/thesis_blocks.py, table 3) with 16 x 16 x 16
             C3D8 per body (--n; --element C3D20 for the quadratic one), centred, not rotated,
-            surface to surface.
+            surface to surface;
+  sphere    the contact-heavy model (issue 9): Hertz point contact, a quarter sphere on a block
+            (tests/contact_models/hertz_sphere.py), C3D8, a/h = 12 (--ratio): about 12,000
+            active lgc7 points at the end of its 6 increments. Also reported: kontakt's wall
+            time split (contact search and points, pattern and symbolic analysis, elements,
+            contact forces, factorisation, solve), the first iteration of an increment against
+            the later ones, and both solvers' peak nodal pressure against Hertz's p0 at the load
+            each measured (4 x the quarter's top reaction).
 For each: wall time, peak resident memory (ru_maxrss of the child, what /usr/bin/time -v
 reports), converged increments and Newton iterations (from the .sta files, every attempt
 counted), the ratios kontakt/ccx, and the agreement of the final displacements
@@ -17,7 +24,7 @@ CCX_NPROC_EQUATION_SOLVER, kontakt through --threads. Machines are noisy: compar
 of one run, not absolute times across runs.
 
   bench_contact.py --kontakt build/solver/app/kontakt [--n 16] [--element C3D8] [--work DIR]
-  bench_contact.py --kontakt ... --smoke     # CI: hueeber1 and an 6^3 cube
+  bench_contact.py --kontakt ... --smoke     # CI: hueeber1, a 6^3 cube, the sphere at a/h 4
 """
 import argparse
 import os
@@ -27,12 +34,43 @@ sys.dont_write_bytecode = True  # keep the source tree clean
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_models"))
+sys.path.insert(0, os.path.join(HERE, "..", "verification"))
+import contact_fields  # noqa: E402
+import datfile  # noqa: E402
+import hertz_sphere  # noqa: E402
 import solvers  # noqa: E402
 import thesis_blocks  # noqa: E402
 from solvers import run_peer  # noqa: E402
 
 SMOKE_N = 6
+SMOKE_RATIO = 4
 AGREEMENT = 1e-2
+
+
+def hertz_p0_error(run, name, nodal_path):
+    """Peak nodal CPRESS against Hertz's p0 at the load the run measured (relative)."""
+    blocks = datfile.parse(os.path.join(run.result_dir, name + ".dat"))
+    load = 4 * abs(sum(row[3] for row in datfile.find(blocks, "forces").rows))
+    _, p0 = hertz_sphere.closed_form(load)
+    peak = max(p for _, p in contact_fields.nodal_contact(nodal_path).values())
+    return peak / p0 - 1
+
+
+def kontakt_timing(run, name):
+    """(phase times of the done event, mean first iteration of an increment, mean later one)."""
+    import json
+    first, later, previous, times = [], [], 0.0, {}
+    with open(os.path.join(run.result_dir, name + ".log.jsonl")) as f:
+        for line in f:
+            e = json.loads(line)
+            if e["event"] == "iteration":
+                (first if e["iteration"] == 1 else later).append(e["wall_time"] - previous)
+            if e["event"] in ("iteration", "increment", "cutback"):
+                previous = e["wall_time"]
+            if e["event"] == "done":
+                times = e.get("summary", {}).get("times", {})
+    mean = lambda v: sum(v) / len(v) if v else float("nan")  # noqa: E731
+    return times, mean(first), mean(later)
 
 
 def displacement_agreement(ours_dat, ccx_dat):
@@ -61,6 +99,7 @@ def main():
     p.add_argument("--scheme", choices=solvers.SCHEMES, help="default: kontakt's default")
     p.add_argument("--n", type=int, default=16, help="cube: elements per direction and body")
     p.add_argument("--element", default="C3D8", choices=("C3D8", "C3D20", "C3D20R"))
+    p.add_argument("--ratio", type=float, default=12, help="sphere: a / h at the contact")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--timeout", type=int, default=3600)
     p.add_argument("--suite", default=run_peer.DEFAULT_SUITE)
@@ -68,13 +107,18 @@ def main():
     p.add_argument("--work", default="bench_contact_work")
     args = p.parse_args()
     n = SMOKE_N if args.smoke else args.n
+    ratio = SMOKE_RATIO if args.smoke else args.ratio
     work = os.path.abspath(args.work)
     run_peer.stage_deck(args.suite, "hueeber1", os.path.join(work, "hueeber1"))
     cube = thesis_blocks.cube(args.element, n=n)
     cube_name = f"cube_{args.element.lower()}_{n}"
+    sphere_name = f"sphere_{ratio:g}"
     cases = [("hueeber1", os.path.join(work, "hueeber1", "hueeber1.inp")),
              (cube_name, solvers.write_deck(cube, os.path.join(work, "cube"),
-                                            "SURFACE TO SURFACE", cube_name))]
+                                            "SURFACE TO SURFACE", cube_name)),
+             (sphere_name, solvers.write_deck(hertz_sphere.hertz_sphere(ratio=ratio),
+                                              os.path.join(work, "sphere"), "SURFACE TO SURFACE",
+                                              sphere_name))]
     print(f"threads: {args.threads} for both; kontakt scheme: {args.scheme or 'default'}")
     print(f"{'case':18s} {'solver':8s} {'status':14s} {'wall s':>8s} {'peak MiB':>9s} "
           f"{'increments':>10s} {'iterations':>10s}")
@@ -93,7 +137,27 @@ def main():
               f"{ours.iterations / max(ccx.iterations, 1):.3f}; final displacements differ by "
               f"{agreement:.2e}")
         ok &= agreement <= AGREEMENT
+        if name == sphere_name:
+            ok &= report_sphere(name, ccx, ours)
     return 0 if ok else 1
+
+
+def report_sphere(name, ccx, ours):
+    """Prints the contact-heavy model's figures; False when a figure cannot be read."""
+    try:
+        times, first, later = kontakt_timing(ours, name)
+        errors = {label: hertz_p0_error(run, name, contact_fields.result_file(run.result_dir, name))
+                  for label, run in (("ccx", ccx), ("kontakt", ours))}
+    except (OSError, KeyError, ValueError) as e:
+        print(f"{name:18s} figures not read: {e}")
+        return False
+    split = ", ".join(f"{k} {v:.2f}" for k, v in times.items())
+    print(f"{name:18s} kontakt time split (s): {split}")
+    print(f"{name:18s} kontakt iterations: first of an increment {first:.2f} s, later ones "
+          f"{later:.2f} s (ratio {first / later:.2f})")
+    print(f"{name:18s} peak nodal pressure against Hertz p0: ccx {errors['ccx']:+.2%}, "
+          f"kontakt {errors['kontakt']:+.2%}")
+    return True
 
 
 if __name__ == "__main__":
