@@ -26,6 +26,7 @@ void set_inactive(int n_dofs, PointResponse& out) {
   out.pressure = {};
   out.f_int.setZero(n_dofs);
   out.K.setZero(n_dofs, n_dofs);
+  out.gap_gradient.setZero(n_dofs);
 }
 
 }  // namespace
@@ -41,6 +42,7 @@ void frozen_point_response(const FaceCoords& slave_x, const FaceCoords& master_x
   out.active = true;
   out.pressure = pressure_overclosure(law, -out.gap);
   const PointDofVec dg = gap_gradient(pt.slave_weights, pt.master_weights, pt.normal);
+  out.gap_gradient = dg;
   out.f_int = -pt.area * out.pressure.pressure * dg;
   out.K = pt.area * out.pressure.slope * dg * dg.transpose();
 }
@@ -105,12 +107,36 @@ bool sliding_point_response(const FaceCoords& slave_x, const FaceVec& Ns,
         -s.N(b) * Dn - n * (s.dN(b, 0) * Dxi.row(0) + s.dN(b, 1) * Dxi.row(1));
 
   const PointDofVec dg = gap_gradient(Ns, s.N, n);
+  out.gap_gradient = dg;
   const Real p = out.pressure.pressure;
   out.f_int = -area * p * dg;
   out.K = area * (out.pressure.slope * dg * dg.transpose() - p * D2g);
   // d2g/du2 is symmetric in exact arithmetic; remove the round-off asymmetry.
   out.K = 0.5 * (out.K + out.K.transpose()).eval();
   return true;
+}
+
+Vec3 frozen_relative_position(const FaceCoords& slave_x, const FaceCoords& master_x,
+                              const FrozenPoint& point) {
+  return slave_x.transpose() * point.slave_weights - master_x.transpose() * point.master_weights;
+}
+
+void add_friction(const FrozenPoint& point, const Mat3& d_force_d_s, const Vec3& force,
+                  const Vec3& d_force_d_normal, const PointResponse& normal, Real area,
+                  PointDofVec& f_int, PointDofMat& K) {
+  const int ns = static_cast<int>(point.slave_weights.size());
+  const int n_dofs = 3 * (ns + static_cast<int>(point.master_weights.size()));
+  auto weight = [&](int node) {
+    return node < ns ? point.slave_weights(node) : -point.master_weights(node - ns);
+  };
+  // dF_N/du = A p' dd/du = -A p' dg/du (zero for an inactive normal response).
+  const PointDofVec d_normal = -area * normal.pressure.slope * normal.gap_gradient;
+  for (int a = 0; a < n_dofs / 3; ++a) {
+    f_int.segment<3>(3 * a) += weight(a) * force;
+    for (int b = 0; b < n_dofs / 3; ++b)
+      K.block<3, 3>(3 * a, 3 * b) += weight(a) * weight(b) * d_force_d_s;
+    if (normal.active) K.middleRows<3>(3 * a) += weight(a) * d_force_d_normal * d_normal.transpose();
+  }
 }
 
 }  // namespace kontakt::contact

@@ -23,6 +23,7 @@ struct PointResponse {
   PressureResponse pressure;
   PointDofVec f_int;        ///< internal force (slave dofs, then master dofs); zero if inactive
   PointDofMat K;            ///< tangent; zero if inactive
+  PointDofVec gap_gradient;  ///< dg/du where active (the normal force's variation: friction)
 };
 
 /// What the linear variants freeze at the start of an increment (thesis section 4.4): the
@@ -34,6 +35,18 @@ struct FrozenPoint {
   Real area = 0;
   Real gap_offset = 0;      ///< added to the geometric gap (initial-overlap ramp)
 };
+
+/// The relative position of the slave point and its frozen foot, x_s - x_m, in the current
+/// configuration (its change since the increment's start is friction's relative displacement).
+Vec3 frozen_relative_position(const FaceCoords& slave_x, const FaceCoords& master_x,
+                              const FrozenPoint& point);
+
+/// Friction's part of a point on the frozen pairing: f_int += B^T F_T and
+/// K += B^T (dF_T/ds B - dF_T/dF_N A p' dg^T) with B = [Ns I, -Nm I] (a = B u); `normal` is the
+/// point's normal response on the same faces (its gap gradient couples the slip force).
+void add_friction(const FrozenPoint& point, const Mat3& d_force_d_s, const Vec3& force,
+                  const Vec3& d_force_d_normal, const PointResponse& normal, Real area,
+                  PointDofVec& f_int, PointDofMat& K);
 
 /// Frozen (linear) point: g is linear in the displacements, K = A p' dg dg^T.
 void frozen_point_response(const FaceCoords& slave_x, const FaceCoords& master_x,

@@ -60,8 +60,19 @@ void scatter_element(const std::vector<int>& nodes, const DofMap& dofs,
             continue;
           }
           const int col = tb->index;
-          if (pattern.upper && row > col) continue;
-          out.values[pattern.find(row, col)] += v;
+          if (!pattern.upper) {
+            out.values[pattern.find(row, col)] += v;
+          } else if (!out.skew.empty()) {  // unsymmetric: both halves, split by symmetry
+            const Index k = pattern.find(std::min(row, col), std::max(row, col));
+            if (row == col) {
+              out.values[k] += v;
+            } else {
+              out.values[k] += 0.5 * v;
+              out.skew[k] += row < col ? 0.5 * v : -0.5 * v;
+            }
+          } else if (row <= col) {
+            out.values[pattern.find(row, col)] += v;
+          }
         }
       }
     }

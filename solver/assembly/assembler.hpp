@@ -11,9 +11,13 @@
 
 namespace kontakt::assembly {
 
-/// The reduced linear system in a pattern's storage.
+/// The reduced linear system in a pattern's storage. In an upper-triangular pattern an
+/// unsymmetric system (friction slip) keeps its symmetric part in `values` and its
+/// skew-symmetric part in `skew`: K(r, c) = values + skew and K(c, r) = values - skew for the
+/// entry (r < c). `skew` is empty while the system is symmetric.
 struct ReducedSystem {
   std::vector<Real> values;  ///< one per pattern entry
+  std::vector<Real> skew;    ///< one per pattern entry, or empty
   VecX rhs;
 };
 
@@ -52,7 +56,8 @@ void assemble_loads(const model::Model& model, const AssemblyPlan& plan,
                     const ElementLoadKernel& kernel, int threads, VecX& rhs);
 
 /// Adds the stiffness K[g] and load f[g] of every node group g of the plan (dof order: the
-/// group's nodes, x, y, z each) into `out`, after assemble().
+/// group's nodes, x, y, z each) into `out`, after assemble(). With `out.skew` sized to the
+/// pattern (upper storage), K[g] may be unsymmetric: its skew part goes there.
 void scatter_groups(const AssemblyPlan& plan, const VecX& prescribed_values,
                     const std::vector<const MatX*>& K, const std::vector<const VecX*>& f,
                     ReducedSystem& out);

@@ -7,14 +7,17 @@ namespace kontakt::linsolve {
 
 namespace {
 
-/// Largest absolute row sum of K stored as the upper triangle of a symmetric matrix.
-Real infinity_norm(const assembly::SparsePattern& pattern, const std::vector<Real>& values) {
+/// Largest absolute row sum of K stored as the upper triangle of a symmetric matrix (plus
+/// its skew part, if any).
+Real infinity_norm(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
+                   const std::vector<Real>& skew) {
   VecX row_sum = VecX::Zero(pattern.n);
   for (int j = 0; j < pattern.n; ++j)
     for (Index k = pattern.col_start[j]; k < pattern.col_start[j + 1]; ++k) {
       const int i = pattern.row_index[k];
-      row_sum[i] += std::abs(values[k]);
-      if (i != j) row_sum[j] += std::abs(values[k]);
+      const Real s = skew.empty() || i == j ? 0 : skew[k];
+      row_sum[i] += std::abs(values[k] + s);
+      if (i != j) row_sum[j] += std::abs(values[k] - s);
     }
   return pattern.n ? row_sum.maxCoeff() : 0;
 }
@@ -22,20 +25,30 @@ Real infinity_norm(const assembly::SparsePattern& pattern, const std::vector<Rea
 }  // namespace
 
 VecX multiply_symmetric(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
-                        const VecX& x) {
+                        const VecX& x, const std::vector<Real>& skew) {
   VecX y = VecX::Zero(pattern.n);
   for (int j = 0; j < pattern.n; ++j)
     for (Index k = pattern.col_start[j]; k < pattern.col_start[j + 1]; ++k) {
       const int i = pattern.row_index[k];
       y[i] += values[k] * x[j];
       if (i != j) y[j] += values[k] * x[i];
+      if (!skew.empty() && i != j) {
+        y[i] += skew[k] * x[j];
+        y[j] -= skew[k] * x[i];
+      }
     }
   return y;
 }
 
 void SpdSolve::factorise(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
-                         SpdSolveReport& report) {
-  stabilised_ = indefinite_ = false;
+                         SpdSolveReport& report, const std::vector<Real>& skew) {
+  stabilised_ = indefinite_ = unsymmetric_ = false;
+  if (std::any_of(skew.begin(), skew.end(), [](Real v) { return v != 0; })) {
+    factorise_indefinite(pattern, values, skew);
+    unsymmetric_ = indefinite_ = true;
+    report.unsymmetric = true;
+    return;
+  }
   try {
     solver_.factorize(values);
     return;
@@ -58,13 +71,14 @@ void SpdSolve::factorise(const assembly::SparsePattern& pattern, const std::vect
     if (!allow_indefinite_) throw;
   }
   // The shift does not help: K has negative pivots, not just a zero-energy mode.
-  factorise_indefinite(pattern, values);
+  factorise_indefinite(pattern, values, {});
   indefinite_ = true;
   report.indefinite = true;
 }
 
 void SpdSolve::factorise_indefinite(const assembly::SparsePattern& upper,
-                                    const std::vector<Real>& values) {
+                                    const std::vector<Real>& values,
+                                    const std::vector<Real>& skew) {
   if (full_.of_col_start != upper.col_start || full_.of_row_index != upper.row_index) {
     // Column j of the full matrix: rows i <= j from upper column j, then rows i > j, which
     // are the entries (j, i) of the later upper columns.
@@ -80,6 +94,7 @@ void SpdSolve::factorise_indefinite(const assembly::SparsePattern& upper,
     for (int j = 0; j < upper.n; ++j) full_.pattern.col_start[j + 1] += full_.pattern.col_start[j];
     full_.pattern.row_index.assign(full_.pattern.nnz(), 0);
     full_.source.assign(full_.pattern.nnz(), 0);
+    full_.lower.assign(full_.pattern.nnz(), 0);
     std::vector<Index> next(full_.pattern.col_start.begin(), full_.pattern.col_start.end() - 1);
     for (int j = 0; j < upper.n; ++j)  // rows ascending within each column: i <= j first
       for (Index k = upper.col_start[j]; k < upper.col_start[j + 1]; ++k) {
@@ -91,6 +106,7 @@ void SpdSolve::factorise_indefinite(const assembly::SparsePattern& upper,
         const int i = upper.row_index[k];
         if (i == j) continue;
         full_.pattern.row_index[next[i]] = j;
+        full_.lower[next[i]] = 1;
         full_.source[next[i]++] = k;
       }
     if (!lu_) lu_ = make_umfpack_solver();
@@ -99,14 +115,18 @@ void SpdSolve::factorise_indefinite(const assembly::SparsePattern& upper,
     full_.of_row_index = upper.row_index;
   }
   std::vector<Real> full_values(full_.source.size());
-  for (std::size_t k = 0; k < full_values.size(); ++k) full_values[k] = values[full_.source[k]];
+  for (std::size_t k = 0; k < full_values.size(); ++k) {
+    full_values[k] = values[full_.source[k]];
+    if (!skew.empty()) full_values[k] += full_.lower[k] ? -skew[full_.source[k]] : skew[full_.source[k]];
+  }
   lu_->factorize(full_values);
 }
 
 VecX SpdSolve::solve(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
-                     const VecX& b, SpdSolveReport& report) {
+                     const VecX& b, SpdSolveReport& report, const std::vector<Real>& skew) {
   report.stabilised = stabilised_;
   report.indefinite = indefinite_;
+  report.unsymmetric = unsymmetric_;
   LinearSolver& factors = indefinite_ ? *lu_ : solver_;
   VecX x = factors.solve(b);
   const Real b_norm = std::max(b.norm(), 1e-300);
@@ -114,18 +134,20 @@ VecX SpdSolve::solve(const assembly::SparsePattern& pattern, const std::vector<R
   // shrink means the loads drive the singular mode. Otherwise the test is the normwise
   // backward error |r| / (|K| |x| + |b|), which an ill-conditioned but regular system (a
   // thin plate in bending) meets although |r| / |b| cannot be brought down to round-off.
-  const Real k_norm = stabilised_ ? 0 : infinity_norm(pattern, values);
+  static const std::vector<Real> kNoSkew;
+  const std::vector<Real>& skew_part = unsymmetric_ ? skew : kNoSkew;
+  const Real k_norm = stabilised_ ? 0 : infinity_norm(pattern, values, skew_part);
   auto accurate = [&](const VecX& r) {
     if (stabilised_) return r.norm() <= kResidualTolerance * b_norm;
     const Real scale = k_norm * x.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
     return r.cwiseAbs().maxCoeff() <= kBackwardErrorTolerance * std::max(scale, 1e-300);
   };
-  VecX r = b - multiply_symmetric(pattern, values, x);
+  VecX r = b - multiply_symmetric(pattern, values, x, skew_part);
   // Iterative refinement: one or two steps restore full accuracy after a stabilised
   // factorisation.
   for (int step = 0; step < 10 && !accurate(r); ++step) {
     x += factors.solve(r);
-    r = b - multiply_symmetric(pattern, values, x);
+    r = b - multiply_symmetric(pattern, values, x, skew_part);
   }
   report.relative_residual = r.norm() / b_norm;
   if (!x.allFinite() || !accurate(r))

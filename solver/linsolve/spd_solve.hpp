@@ -14,14 +14,16 @@
 
 namespace kontakt::linsolve {
 
-/// y = K x for K stored as the upper triangle of a symmetric matrix.
+/// y = K x for K stored as the upper triangle of a symmetric matrix, plus the skew-symmetric
+/// part `skew` (same storage; empty: none) of an unsymmetric one.
 VecX multiply_symmetric(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
-                        const VecX& x);
+                        const VecX& x, const std::vector<Real>& skew = {});
 
 /// What happened during one solve; the caller turns a stabilised solve into a warning.
 struct SpdSolveReport {
   bool stabilised = false;   ///< K had a zero-energy mode; solved with K + delta*diag(K)
   bool indefinite = false;   ///< K was indefinite; solved by LU (allow_indefinite only)
+  bool unsymmetric = false;  ///< K had a skew part (friction slip); solved by LU
   int singular_equation = -1;
   Real relative_residual = 0;  ///< |b - K x| / |b| of the returned solution
 };
@@ -35,10 +37,12 @@ class SpdSolve {
  public:
   explicit SpdSolve(LinearSolver& solver, bool allow_indefinite = false)
       : solver_(solver), allow_indefinite_(allow_indefinite) {}
+  /// `skew`: the skew-symmetric part of an unsymmetric K in the same storage (empty: K is
+  /// symmetric); a nonzero one goes to the LU path at once.
   void factorise(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
-                 SpdSolveReport& report);
+                 SpdSolveReport& report, const std::vector<Real>& skew = {});
   VecX solve(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
-             const VecX& b, SpdSolveReport& report);
+             const VecX& b, SpdSolveReport& report, const std::vector<Real>& skew = {});
 
   /// Relative stabilisation of the diagonal; the residual |r| / |b| a stabilised solution must
   /// reach, and the normwise backward error every other solution must reach.
@@ -52,16 +56,18 @@ class SpdSolve {
   struct FullMatrix {
     assembly::SparsePattern pattern;
     std::vector<Index> source;
+    std::vector<char> lower;  ///< per full entry: it mirrors its source (K(c, r), r < c)
     std::vector<Index> of_col_start;  ///< the upper pattern it was built from
     std::vector<int> of_row_index;
   };
   void factorise_indefinite(const assembly::SparsePattern& pattern,
-                            const std::vector<Real>& values);
+                            const std::vector<Real>& values, const std::vector<Real>& skew);
 
   LinearSolver& solver_;
   bool allow_indefinite_;
   bool stabilised_ = false;
   bool indefinite_ = false;
+  bool unsymmetric_ = false;
   std::unique_ptr<LinearSolver> lu_;
   FullMatrix full_;
 };

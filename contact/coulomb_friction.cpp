@@ -1,0 +1,40 @@
+#include "contact/coulomb_friction.hpp"
+
+#include <cmath>
+
+namespace kontakt::contact {
+
+TangentialResponse coulomb_response(const CoulombLaw& law, const FrictionState& start,
+                                    const Vec3& s, const Vec3& normal, Real area,
+                                    Real normal_force) {
+  TangentialResponse r;
+  const Mat3 P = Mat3::Identity() - normal * normal.transpose();
+  r.state.tangential = start.tangential + P * s;
+  const bool tied = !std::isfinite(law.mu);  // sticks whatever the normal force
+  if (!(normal_force > 0) && !tied) {
+    // Open (or in a law's tension tail): no shear; the elastic stretch goes, the slip stays.
+    r.state.slip = r.state.tangential;
+    return r;
+  }
+  const Real k_t = law.stick_slope * area;
+  const Vec3 elastic = r.state.tangential - start.slip;
+  const Vec3 trial = k_t * elastic;
+  const Real trial_norm = trial.norm();
+  const Real limit = tied ? trial_norm : law.mu * normal_force;
+  if (trial_norm <= limit) {
+    r.force = trial;
+    r.d_force_d_s = k_t * P;
+    r.state.slip = start.slip;
+    return r;
+  }
+  const Vec3 xi = trial / trial_norm;
+  r.slipping = true;
+  r.force = limit * xi;
+  // d xi / d s = (I - xi xi^T) / |elastic| * P
+  r.d_force_d_s = limit / elastic.norm() * (Mat3::Identity() - xi * xi.transpose()) * P;
+  r.d_force_d_normal = law.mu * xi;
+  r.state.slip = start.slip + (trial_norm - limit) / k_t * xi;
+  return r;
+}
+
+}  // namespace kontakt::contact
