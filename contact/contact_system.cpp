@@ -1,12 +1,15 @@
 #include "contact/contact_system.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "contact/contact_extrapolation.hpp"
 #include "contact/master_search.hpp"
 #include "contact/slave_points.hpp"
+#include "contact/state_transfer.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 
@@ -52,6 +55,10 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
       throw InputError(def.where, "*CONTACT PAIR",
                        "master surface " + def.master + " has no element faces");
     const bool nts = pair.scheme.kind == Kind::NodeToSurface;
+    if (nts && pair.law.kind == PressureLaw::Kind::Tied)
+      throw InputError(def.where, "*CONTACT PAIR",
+                       "PRESSURE-OVERCLOSURE=TIED is face-to-face contact: use TYPE=SURFACE TO "
+                       "SURFACE (or a segment scheme) for this pair");
     if (!nts && pair.slave.faces.empty())
       throw InputError(def.where, "*CONTACT PAIR",
                        "scheme " + model::contact_scheme_name(pair.scheme) +
@@ -72,6 +79,24 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
         units_.push_back({.pair = p, .face = static_cast<int>(f)});
     }
     pairs_.push_back(std::move(pair));
+  }
+}
+
+void ContactSystem::begin_step(const model::Step& step) {
+  frictional_ = false;
+  for (Pair& pair : pairs_) {
+    const auto index = static_cast<std::size_t>(pair.def->interaction);
+    const std::optional<model::Friction>& f =
+        index < step.interaction_friction.size() ? step.interaction_friction[index] : std::nullopt;
+    pair.friction.reset();
+    if (pair.law.kind == PressureLaw::Kind::Tied) {
+      // Tied contact sticks with the *FRICTION card's slope, whatever mu says (ccx).
+      pair.friction = CoulombLaw{.mu = std::numeric_limits<Real>::infinity(),
+                                 .stick_slope = f ? f->stick_slope : 0};
+    } else if (f) {
+      pair.friction = CoulombLaw{.mu = f->mu, .stick_slope = f->stick_slope};
+    }
+    frictional_ |= pair.friction.has_value();
   }
 }
 
@@ -166,7 +191,7 @@ void ContactSystem::find_candidates(Unit& unit, const VecX& u,
   }
 }
 
-void ContactSystem::build_points(Unit& unit, const VecX& u) const {
+void ContactSystem::build_points(Unit& unit, const VecX& u, const OldStates& old) const {
   const Pair& pair = pairs_[unit.pair];
   const UnitGeometry g = geometry(unit, u);
   unit.points.clear();
@@ -204,7 +229,58 @@ void ContactSystem::build_points(Unit& unit, const VecX& u) const {
       if (pt.pairing.master < 0) continue;
     }
     freeze(unit, g, pt, u);
+    pt.frozen_relative =
+        frozen_relative_position(g.slave.x, g.masters[pt.frozen_master].x, pt.frozen);
   }
+  // The slip history moves over: per slave node, or interpolated over the slave face.
+  if (old.xi.empty()) return;
+  std::vector<Vec2> xi;
+  for (const Point& pt : unit.points) xi.push_back(pt.xi_s);
+  const MatX moved =
+      unit.node >= 0 ? old.states.topRows(1)
+                     : transfer_states(pair.slave.faces[unit.face].topo, old.xi, old.states,
+                                       old.corners, xi);
+  for (std::size_t k = 0; k < unit.points.size(); ++k) {
+    Point& pt = unit.points[k];
+    pt.friction_start = unpack(moved.row(static_cast<Index>(unit.node >= 0 ? 0 : k)).transpose());
+    pt.committed.friction = pt.trial.friction = pt.friction_start;
+  }
+}
+
+std::vector<ContactSystem::OldStates> ContactSystem::committed_states() const {
+  std::vector<OldStates> old(units_.size());
+  if (!frictional_) return old;
+  // Per pair: the corner states of every face, summed at the corner nodes.
+  std::vector<std::map<int, std::pair<StateVector, int>>> at_node(pairs_.size());
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const Unit& unit = units_[k];
+    OldStates& o = old[k];
+    for (const Point& pt : unit.points) {
+      if (pt.frozen_master < 0) continue;  // no master under it: it carried no state
+      o.xi.push_back(pt.xi_s);
+      o.states.conservativeResize(o.states.rows() + 1, 6);
+      o.states.row(o.states.rows() - 1) = pack(pt.committed.friction).transpose();
+    }
+    if (unit.node >= 0 || o.xi.empty()) continue;
+    const SurfaceFace& face = pairs_[unit.pair].slave.faces[unit.face];
+    o.corners = corner_states(face.topo, o.xi, o.states);
+    for (Index c = 0; c < o.corners.rows(); ++c) {
+      auto& [sum, count] = at_node[unit.pair][face.nodes[c]];
+      if (count == 0) sum.setZero();
+      sum += o.corners.row(c).transpose();
+      ++count;
+    }
+  }
+  for (std::size_t k = 0; k < units_.size(); ++k) {
+    const Unit& unit = units_[k];
+    if (unit.node >= 0 || old[k].xi.empty()) continue;
+    const SurfaceFace& face = pairs_[unit.pair].slave.faces[unit.face];
+    for (Index c = 0; c < old[k].corners.rows(); ++c) {
+      const auto& [sum, count] = at_node[unit.pair].at(face.nodes[c]);
+      old[k].corners.row(c) = (sum / count).transpose();
+    }
+  }
+  return old;
 }
 
 ContactSystem::Pairing ContactSystem::pair_point(const Unit& unit, const UnitGeometry& g,
@@ -263,10 +339,11 @@ void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, 
       boxes.push_back(face_box(face_geometry(f, model_.mesh.coords, u)));
     trees.emplace_back(boxes);
   }
+  const std::vector<OldStates> old = committed_states();
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
       find_candidates(units_[k], u, trees);
-      build_points(units_[k], u);
+      build_points(units_[k], u, old[k]);
     }
   });
   build_groups();
@@ -306,6 +383,8 @@ void ContactSystem::Sums::add(const Sums& o) {
   force.components += o.force.components;
   active += o.active;
   pressing += o.pressing;
+  sticking += o.sticking;
+  slipping += o.slipping;
   contact_force += o.contact_force;
   stabilisation_force += o.stabilisation_force;
   stabilisation_energy += o.stabilisation_energy;
@@ -385,11 +464,42 @@ ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool
     }
     // Points that press carry the load; the others (open, or in a law's tension tail) still
     // have to close.
-    contact_response(pt);
+    const bool pressed = contact_response(pt);
     if (pt.trial.pressure <= 0 && spring_gap > 0)
       sums.min_open_gap = std::min(sums.min_open_gap, spring_gap);
+    if (pair.friction && pt.frozen_master >= 0) add_point_friction(unit, g, pt, pressed ? &r : nullptr, sums);
   }
   return sums;
+}
+
+void ContactSystem::add_point_friction(Unit& unit, const UnitGeometry& g, Point& pt,
+                                       const PointResponse* normal, Sums& sums) {
+  // On the frozen pairing of the increment (its normal and foot point): the relative
+  // displacement since the start, the normal force of the current evaluation.
+  PointState& s = pt.trial;
+  const FaceCoords& master_x = g.masters[pt.frozen_master].x;
+  const Vec3 moved = frozen_relative_position(g.slave.x, master_x, pt.frozen) - pt.frozen_relative;
+  const Real area = s.active ? s.area : pt.frozen.area;
+  const Real normal_force = s.active ? s.pressure * s.area : 0;
+  const TangentialResponse t = coulomb_response(*pairs_[unit.pair].friction, pt.friction_start,
+                                                moved, pt.frozen.normal, area, normal_force);
+  s.friction = t.state;
+  s.shear = area > 0 ? Vec3(t.force / area) : Vec3::Zero();
+  s.slipping = t.slipping;
+  if (!s.active) return;
+  (t.slipping ? sums.slipping : sums.sticking) += 1;
+  // The slip force's coupling to the normal force needs the normal response on these faces.
+  PointResponse none;
+  const bool coupled = normal && pt.pairing.master == pt.frozen_master;
+  const int n_dofs = 3 * static_cast<int>(pt.frozen.slave_weights.size() + master_x.rows());
+  PointDofVec f = PointDofVec::Zero(n_dofs);
+  PointDofMat K = PointDofMat::Zero(n_dofs, n_dofs);
+  add_friction(pt.frozen, t.d_force_d_s, t.force, t.d_force_d_normal, coupled ? *normal : none,
+               area, f, K);
+  GroupContribution& c = contributions_[unit.groups[pt.frozen_master]];
+  c.K += K;
+  c.f_int += f;
+  sums.force.abs_sum += f.cwiseAbs().sum();
 }
 
 void ContactSystem::update(const VecX& u, int threads) {
@@ -449,6 +559,7 @@ ForceMeasure ContactSystem::add_to(const assembly::AssemblyPlan& plan, const Vec
     for (std::size_t a = 0; a < nodes.size(); ++a)
       internal_force.segment<3>(3 * nodes[a]) += c.f_int.segment<3>(3 * a);
   }
+  if (sums_.slipping > 0) system.skew.assign(system.values.size(), 0.0);  // unsymmetric slip
   assembly::scatter_groups(plan, prescribed_step, K, f, system);
   return sums_.force;
 }
@@ -547,6 +658,17 @@ void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {
       r.pressure = pt.committed.pressure;
       r.area = pt.committed.area;
       r.energy = pt.committed.energy;
+      if (pair.friction && pt.frozen_master >= 0) {
+        // ccx's output directions: t1 the global x (z when the normal is x) in the tangent
+        // plane, t2 = n x t1.
+        const Vec3& n = pt.frozen.normal;
+        const Vec3 axis = std::abs(std::abs(n.x()) - 1) < 1.5e-6 ? Vec3::UnitZ() : Vec3::UnitX();
+        const Vec3 t1 = (axis - axis.dot(n) * n).normalized(), t2 = n.cross(t1);
+        const Vec3& t = pt.committed.friction.tangential;
+        r.slip = Vec2(t.dot(t1), t.dot(t2));
+        r.shear = Vec2(pt.committed.shear.dot(t1), pt.committed.shear.dot(t2));
+        r.sticking = pt.committed.active && !pt.committed.slipping;
+      }
       frame.contact_points.push_back(r);
       frame.n_active_contact += pt.committed.active;
     }

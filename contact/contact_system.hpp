@@ -25,6 +25,7 @@
 #include "assembly/assembler.hpp"
 #include "contact/aabb_tree.hpp"
 #include "contact/contact_surface.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "contact/point_kernel.hpp"
 #include "model/model.hpp"
 #include "nonlinear/convergence.hpp"
@@ -67,6 +68,9 @@ struct PointState {
   Real pressure = 0;
   Real area = 0;
   Real energy = 0;              ///< spring energy, pressure energy times area
+  FrictionState friction;       ///< slip history (frictional pairs)
+  Vec3 shear = Vec3::Zero();    ///< tangential traction F_T / A on the slave side
+  bool slipping = false;
 };
 
 class ContactSystem {
@@ -90,7 +94,12 @@ class ContactSystem {
   bool wants_line_search(int iteration) const;
 
   // --- Lifecycle --------------------------------------------------------------------------
-  /// Also switches the stabilisation springs off.
+  /// The friction in force from this step on (*FRICTION as *CHANGE FRICTION left it; TIED
+  /// pairs stick with the card's slope); the slip history is kept.
+  void begin_step(const model::Step& step);
+  /// Rebuilds the points at the converged displacements `u`; their friction state is moved
+  /// over from the committed state of the old ones (node-to-surface: per slave node; else per
+  /// slave face, state_transfer). Also switches the stabilisation springs off.
   void begin_increment(const VecX& u, const IncrementContext& ctx, int threads);
   /// Node lists of the contact groups of this increment (slave nodes first, then the master
   /// face's nodes); the same while begin_increment found the same candidates.
@@ -108,6 +117,10 @@ class ContactSystem {
   const std::vector<GroupContribution>& contributions() const { return contributions_; }
   /// Contact elements (points or nodes carrying force) after the last update().
   int n_active() const { return sums_.active; }
+  /// Frictional pairs: active points sticking and slipping after the last update(); -1 when
+  /// no pair has friction. While some point slips the tangent is unsymmetric.
+  int n_sticking() const { return frictional_ ? sums_.sticking : -1; }
+  int n_slipping() const { return frictional_ ? sums_.slipping : -1; }
 
   /// The verdict on an increment converged at `u` (thesis section 7.1: frozen projections
   /// that no longer lie under their points give wrong gaps).
@@ -167,10 +180,12 @@ class ContactSystem {
     Real ref_weight = 0;        ///< area = ref_weight * |J_slave(xi_s)|; NTS: the nodal area
     Pairing pairing{};
     /// The pairing at begin_increment, frozen (foot weights, normal, area): what the linear
-    /// variants evaluate, and where every scheme's stabilisation spring acts.
+    /// variants evaluate, and where every scheme's stabilisation spring and friction act.
     FrozenPoint frozen{};
     int frozen_master = -1;
     Real frozen_gap = 0;        ///< geometric gap at begin_increment
+    Vec3 frozen_relative = Vec3::Zero();  ///< x_s - x_m at begin_increment
+    FrictionState friction_start{};  ///< the state the increment starts from
     Real overlap0 = 0;          ///< initial overlap being ramped out (<= 0)
     Real closure = 0;           ///< tiny initial gap counted as closed (>= 0)
     PointState trial{}, committed{};
@@ -190,6 +205,7 @@ class ContactSystem {
     model::SurfaceBehavior behavior;
     PressureLaw law;            ///< the scheme's law for this behaviour
     Real penalty = 0;           ///< reference_stiffness(law): scales the stabilisation
+    std::optional<CoulombLaw> friction;  ///< in force for the current step
     ContactSurface slave, master;
     /// node-to-surface: the faces nodal areas come from (the slave faces, or for a node-based
     /// slave surface the exterior faces at its nodes) and, per node, (face, local node)
@@ -211,7 +227,16 @@ class ContactSystem {
     return -pt.overlap0 * (1 - ctx_.fraction_end) - pt.closure;
   }
   void find_candidates(Unit& unit, const VecX& u, const std::vector<AabbTree>& trees) const;
-  void build_points(Unit& unit, const VecX& u) const;
+  /// Points, pairing and frozen geometry of one unit at `u`; the friction state moves over from
+  /// `old` (the unit's committed points before, with the corners' states for faces).
+  struct OldStates {
+    std::vector<Vec2> xi;
+    MatX states;                ///< one packed FrictionState per row
+    MatX corners;               ///< faces: per corner, averaged over the faces at its node
+  };
+  void build_points(Unit& unit, const VecX& u, const OldStates& old) const;
+  /// The committed friction states of every unit's points, with averaged face corners.
+  std::vector<OldStates> committed_states() const;
   Pairing pair_point(const Unit& unit, const UnitGeometry& g, const Point& pt,
                      const VecX& u) const;
   void freeze(const Unit& unit, const UnitGeometry& g, Point& pt, const VecX& u) const;
@@ -221,6 +246,7 @@ class ContactSystem {
     ForceMeasure force;         ///< of the active points and the stabilisation springs
     int active = 0;
     int pressing = 0;           ///< active points in compression
+    int sticking = 0, slipping = 0;
     Real contact_force = 0;     ///< sum of the compressive normal forces
     Real stabilisation_force = 0, stabilisation_energy = 0;
     Real stabilisation_pull = 0;  ///< sum of the springs' tensions (minus their compressions)
@@ -230,6 +256,10 @@ class ContactSystem {
   };
   /// Evaluates one unit into its points' trial states and its groups.
   Sums evaluate_unit(Unit& unit, const VecX& u, bool repair);
+  /// Friction of one point (frictional pairs), into its trial state and its frozen group;
+  /// `normal` is its normal response when active.
+  void add_point_friction(Unit& unit, const UnitGeometry& g, Point& pt,
+                          const PointResponse* normal, Sums& sums);
 
   const model::Model& model_;
   std::vector<Pair> pairs_;
@@ -240,6 +270,7 @@ class ContactSystem {
   int evaluations_ = 0;         ///< update() calls in this solve (they decide re-pairing)
   bool repair_once_ = false;    ///< stabilised solves: re-pair at their first update only
   Real stabilisation_ = 0;
+  bool frictional_ = false;     ///< some pair has friction (or is TIED) in the current step
   Sums sums_;                   ///< of the last update
 };
 

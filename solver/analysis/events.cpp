@@ -36,6 +36,8 @@ std::string to_json_line(const Event& e) {
   if (e.residual >= 0) j["residual"] = e.residual;
   if (e.correction >= 0) j["correction"] = e.correction;
   if (e.contact_elements >= 0) j["contact_elements"] = e.contact_elements;
+  if (e.stick >= 0) j["stick"] = e.stick;
+  if (e.slip >= 0) j["slip"] = e.slip;
   if (e.stabilisation > 0) j["stabilisation"] = e.stabilisation;
   if (e.stabilisation_energy >= 0) j["stabilisation_energy"] = e.stabilisation_energy;
   if (e.strain_energy >= 0) j["strain_energy"] = e.strain_energy;

@@ -25,6 +25,7 @@ struct Event {
   Real step_time = 0, total_time = 0, dt = 0;
   Real residual = -1, correction = -1;  ///< ccx-style ratios in %, -1 when not measured
   int contact_elements = -1;            ///< active contact elements, -1 for models without contact
+  int stick = -1, slip = -1;            ///< of them sticking and slipping; -1 without friction
   /// Iteration: the contact stabilisation's spring factor (0: off). Increment (models with
   /// contact): the energy the stabilisation absorbed in it and the strain energy at its end
   /// (-1: not reported).

@@ -115,6 +115,7 @@ class NonlinearStatic {
       warn(sc.number, step.where.file + ":" + std::to_string(step.where.line) +
                           ": *STATIC has no data line: one increment of 1 over a step time of 1");
     layout_.update(model_, step, *solver_, threads_);
+    contact_.begin_step(step);
     require_loads_reach_elements(
         model_, layout_.dofs(),
         external_forces(model_, step, sc.period, total_time_start_ + sc.period, 1.0));
@@ -339,9 +340,11 @@ class NonlinearStatic {
     const assembly::DofMap& dofs = layout_.dofs();
     const assembly::AssemblyPlan& plan = layout_.plan();
     linsolve::SpdSolveReport report;
-    timed(times_.factorisation, [&] { spd_.factorise(plan.pattern, a.ev.system.values, report); });
+    // The skew part (friction slip) is empty while the tangent is symmetric.
+    const auto& sys = a.ev.system;
+    timed(times_.factorisation, [&] { spd_.factorise(plan.pattern, sys.values, report, sys.skew); });
     const VecX dx = timed(times_.solve, [&] {
-      return spd_.solve(plan.pattern, a.ev.system.values, a.ev.system.rhs, report);
+      return spd_.solve(plan.pattern, sys.values, sys.rhs, report, sys.skew);
     });
     if (report.stabilised && !warned_zero_energy_mode_) {
       warned_zero_energy_mode_ = true;
@@ -461,7 +464,8 @@ class NonlinearStatic {
                       .total_time = total_time_start_ + a.t, .dt = increments_->increment(),
                       .residual = 100 * verdict.residual_ratio,
                       .correction = 100 * verdict.correction_ratio,
-                      .contact_elements = contact_count(),
+                      .contact_elements = contact_count(), .stick = contact_.n_sticking(),
+                      .slip = contact_.n_slipping(),
                       .stabilisation = contact_.stabilisation(), .wall_time = wall()});
   }
 

@@ -6,7 +6,6 @@
 #include "app/monitor_files.hpp"
 #include "app/result_writers.hpp"
 #include "contact/adjust_nodes.hpp"
-#include "contact/unsolved_interactions.hpp"
 #include "core/error.hpp"
 #include "inp/read_deck.hpp"
 #include "linsolve/blas_threads.hpp"
@@ -27,7 +26,6 @@ DeckError deck_error_of(const InputError& e) {
 /// pair, and the slave nodes ADJUST asks for moved onto their master surfaces.
 model::Model read_model(const fs::path& deck, const std::optional<std::string>& scheme) {
   model::Model model = inp::read_deck(deck);
-  contact::reject_unsolved_interactions(model);
   contact::adjust_slave_nodes(model);
   if (!scheme) return model;
   const auto parsed = model::contact_scheme_from_name(*scheme);

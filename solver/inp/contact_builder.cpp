@@ -35,7 +35,7 @@ std::string default_origin(const DeckState& state) {
 }
 
 /// ccx's *SURFACE BEHAVIOR defaults: c0 <= 0 -> 1e-3; LINEAR/TIED K <= 0 -> 50 E; LINEAR
-/// sigma_inf <= 0 -> E / 70000. The warning names the defaults that matter: sigma_inf only
+/// sigma_inf <= 0 -> E / 70000; TIED has no default K. The warning names the defaults that matter: sigma_inf only
 /// acts in node-to-surface contact.
 void resolve_behavior(DeckState& state, std::size_t index, bool tension_matters) {
   model::SurfaceBehavior& b = state.model.interactions[index].behavior;
@@ -43,6 +43,10 @@ void resolve_behavior(DeckState& state, std::size_t index, bool tension_matters)
   if (b.clearance_c0 <= 0) b.clearance_c0 = 1e-3;
   if (b.law != Law::Linear && b.law != Law::Tied) return;
   const bool default_k = b.stiffness <= 0;
+  if (b.law == Law::Tied && default_k)
+    throw InputError(where, "*SURFACE BEHAVIOR",
+                     "PRESSURE-OVERCLOSURE=TIED needs its stiffness K on a data line (ccx would "
+                     "silently solve the card as LINEAR)");
   const bool default_tension = b.law == Law::Linear && b.tension_limit <= 0;
   if (!default_k && !default_tension) return;
   const Real young = first_young(state, where, "*SURFACE BEHAVIOR", "the default stiffness");

@@ -205,8 +205,9 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
 
 void DatWriter::contact_request(const model::ContactRequest& r, const Frame& f) {
   if (model_.contact_pairs.empty()) return;
+  // The scheme solved (a --scheme override may differ from the pair's TYPE) decides the rows.
   const bool by_node =
-      model_.contact_pairs.front().type == model::ContactPair::Type::NodeToSurface;
+      model_.contact_pairs.front().scheme.kind == model::ContactScheme::Kind::NodeToSurface;
   const auto& mesh = model_.mesh;
   std::vector<const ContactPointRecord*> rows;
   for (const auto& p : f.contact_points)

@@ -55,6 +55,10 @@ class TwoBodyModel:
     contact_print: str = ""   # e.g. "CSTR,CDIS" (empty: no *CONTACT PRINT)
     contact_file: bool = False  # *NODE FILE U and *CONTACT FILE CDIS,CSTR (frd / HDF5 fields)
     notes: list = field(default_factory=list)       # ** comment lines at the top of the deck
+    friction: tuple = None    # (mu, lambda): *FRICTION of the interaction
+    # further *STEPs after the first: [(increment tuple, [(body, nset, first dof, last dof,
+    # value)])], each adding prescribed displacements (loads and supports carry over)
+    later_steps: list = field(default_factory=list)
 
     def body(self, name):
         return {self.lower.name: self.lower, self.upper.name: self.upper}[name]
@@ -120,6 +124,7 @@ def deck_text(model):
             lines += [", ".join(ch) + ("," if k < len(chunks) - 1 else "")
                       for k, ch in enumerate(chunks)]
     used_sets = ({(b, s) for b, s, *_ in model.fixed}
+                 | {(b, s) for _, fixed in model.later_steps for b, s, *_ in fixed}
                  | {(b, s) for b, s, _ in model.node_prints})
     for body, nset in sorted(used_sets):
         lines.append(f"*NSET, NSET={_set_name(body, nset)}")
@@ -133,16 +138,26 @@ def deck_text(model):
                   f"*SOLID SECTION, ELSET={body.name}, MATERIAL={body.name}_MATERIAL"]
     lines += ["*SURFACE INTERACTION, NAME=CONTACT",
               "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
-              f"{fmt(model.penalty)}, {fmt(model.tension)}",
-              f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}",
-              "SLAVE, MASTER"]
-    lines.append(f"*STEP{', NLGEOM' if model.nlgeom else ''}, INC={model.max_increments}")
-    lines += ["*STATIC", ", ".join(fmt(v) for v in model.increment)]
-    if model.fixed:
+              f"{fmt(model.penalty)}, {fmt(model.tension)}"]
+    if model.friction:
+        lines += ["*FRICTION", ", ".join(fmt(v) for v in model.friction)]
+    lines += [f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}", "SLAVE, MASTER"]
+    lines += _step_lines(model, model.increment, model.fixed, model.pressures)
+    for increment, fixed in model.later_steps:
+        lines += _step_lines(model, increment, fixed, [])
+    return "\n".join(lines) + "\n"
+
+
+def _step_lines(model, increment, fixed, pressures):
+    """One *STEP with its supports, loads and output requests."""
+    fmt = meshgen._fmt
+    lines = [f"*STEP{', NLGEOM' if model.nlgeom else ''}, INC={model.max_increments}",
+             "*STATIC", ", ".join(fmt(v) for v in increment)]
+    if fixed:
         lines.append("*BOUNDARY")
-        for body, nset, first, last, value in model.fixed:
+        for body, nset, first, last, value in fixed:
             lines.append(f"{_set_name(body, nset)}, {first}, {last}, {fmt(value)}")
-    for body, nset, pressure in model.pressures:
+    for body, nset, pressure in pressures:
         lines.append("*DLOAD")
         lines += [f"{e}, P{f}, {fmt(pressure)}" for e, f in model.faces(body, nset)]
     for body, nset, variables in model.node_prints:
@@ -154,4 +169,4 @@ def deck_text(model):
     if model.contact_file:
         lines += ["*NODE FILE", "U", "*CONTACT FILE", "CDIS, CSTR"]
     lines.append("*END STEP")
-    return "\n".join(lines) + "\n"
+    return lines

@@ -52,6 +52,32 @@ def direct_solver(text):
     return ITERATIVE_SOLVER.sub(r"\1", text)
 
 
+def with_printed_displacements(text):
+    """A deck that prints nothing to the .dat (friction1, fricloop, ...: .frd output only)
+    gets *NODE PRINT U of every node at the end of every step, the same for ccx and kontakt,
+    so the .dat blocks can be compared; decks that print keep their own requests."""
+    lines = text.splitlines()
+    upper = [ln.strip().upper().replace(" ", "") for ln in lines]
+    if any(u.startswith(("*NODEPRINT", "*ELPRINT")) for u in upper):
+        return text
+    ids, in_nodes = [], False
+    for ln, u in zip(lines, upper):
+        if u.startswith("*"):
+            in_nodes = u.startswith("*NODE") and not u.startswith(("*NODEFILE", "*NODEOUTPUT"))
+        elif in_nodes and ln.strip() and not ln.strip().startswith("**"):
+            ids.append(int(ln.split(",")[0]))
+    out, defined = [], False
+    for ln, u in zip(lines, upper):
+        if u.startswith("*STEP") and not defined:
+            out += ["*NSET, NSET=KONTAKT_PEER_NODES"]
+            out += [", ".join(str(i) for i in ids[k:k + 16]) for k in range(0, len(ids), 16)]
+            defined = True
+        if u.startswith("*ENDSTEP"):
+            out += ["*NODE PRINT, NSET=KONTAKT_PEER_NODES", "U"]
+        out.append(ln)
+    return "\n".join(out) + "\n"
+
+
 def stage_deck(source_dir, name, dest, transform=None):
     """Writes NAME.inp and its includes, decompressed, into dest."""
     os.makedirs(dest, exist_ok=True)
@@ -91,7 +117,8 @@ def ccx_reference(source_dir, name, work):
         return cached
     run_dir = os.path.join(work, name, "ccx")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir, direct_solver)
+    stage_deck(source_dir, name, run_dir,
+               lambda text: with_printed_displacements(direct_solver(text)))
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     try:
         proc = run_killable(["ccx", "-i", name], run_dir, CCX_TIMEOUT, env)
@@ -178,7 +205,7 @@ def run_one(source_dir, name, args):
         return "ERROR", None, f"reference: {e}"
     run_dir = os.path.join(work_root(args.work, source_dir), name, "kontakt")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir)
+    stage_deck(source_dir, name, run_dir, with_printed_displacements)
     try:
         proc = run_killable([args.kontakt, "solve", name + ".inp", "-o", "out", "--quiet",
                              "--threads", "1"], run_dir, args.timeout)

@@ -33,12 +33,11 @@ The contact peer set (`contact=True`, run_peer.py --contact): frictionless penal
 The same rule, with NLGEOM allowed (not required; C3D8I excluded), the keywords of
 CONTACT_KEYWORDS admitted, and:
   - *CONTACT PAIR: TYPE= NODE TO SURFACE or SURFACE TO SURFACE (not MORTAR and its kin);
-  - *SURFACE BEHAVIOR: PRESSURE-OVERCLOSURE= LINEAR, EXPONENTIAL, TABULAR or HARD (not TIED:
-    tied contact comes with friction, later);
+  - *SURFACE BEHAVIOR: PRESSURE-OVERCLOSURE= LINEAR, EXPONENTIAL, TABULAR, TIED or HARD;
   - *CONTACT PRINT / FILE / OUTPUT: variables from CONTACT_VARIABLES (CDIS, CSTR, CELS) only,
     by their first four characters as ccx reads them (CDISP, CSTRESS);
-  - *FRICTION, *CHANGE FRICTION, *CHANGE SURFACE BEHAVIOR and *MODEL CHANGE stay unsupported
-    keywords (frictionless decks with one fixed set of pairs);
+  - *FRICTION and *CHANGE FRICTION admitted (Coulomb friction); *CHANGE SURFACE BEHAVIOR and
+    *MODEL CHANGE stay unsupported keywords (one fixed set of pairs and laws);
   - the deck has at least one *CONTACT PAIR.
 
 Usable as a module (`exclusion_reason`, `qualifying_decks`, `element_types`, `read_text`,
@@ -66,9 +65,9 @@ SUPPORTED_KEYWORDS = {
 }
 FORBIDDEN_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
 CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
-                    "CONTACT FILE", "CONTACT OUTPUT"}
+                    "CONTACT FILE", "CONTACT OUTPUT", "FRICTION", "CHANGE FRICTION"}
 CONTACT_TYPES = {"NODE TO SURFACE", "SURFACE TO SURFACE"}
-PRESSURE_OVERCLOSURES = {"LINEAR", "EXPONENTIAL", "TABULAR", "HARD"}
+PRESSURE_OVERCLOSURES = {"LINEAR", "EXPONENTIAL", "TABULAR", "TIED", "HARD"}
 CONTACT_VARIABLES = {"CDIS", "CSTR", "CELS"}
 NODE_PRINT_VARIABLES = {"U", "RF"}
 EL_PRINT_VARIABLES = {"S", "E", "EVOL", "ENER", "ELSE", "PEEQ"}
@@ -258,7 +257,7 @@ def exclusion_reason(path, nlgeom=False, contact=False):
                     if var and var not in allowed:
                         return f"*{keyword} of {var}"
             prints += 1
-    if prints == 0:  # (c)
+    if prints == 0 and not contact:  # (c); the contact set prints U itself (run_peer.py)
         return "no *NODE PRINT / *EL PRINT"
     if nlgeom and not has_nlgeom:
         return "no NLGEOM step"

@@ -88,34 +88,32 @@ TEST_F(RunJobTest, UnknownSchemeIsAnInputError) {
   EXPECT_FALSE(check_deck(dir / "c.inp", "lgc12").error);
 }
 
-TEST_F(RunJobTest, FrictionAndTiedContactAreRefusedAtTheirCard) {
-  // Solving them frictionless would be a silent wrong answer. Lines 33-35 hold SI.
+TEST_F(RunJobTest, FrictionAndTiedContactAreCheckedAsCcxDoes) {
+  // Friction and *CHANGE FRICTION are solved; a TIED card needs its stiffness and a *FRICTION
+  // (its stick slope). Lines 33-35 hold SI.
   const std::string pair = "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSLAVE, MASTER\n";
   const std::string step = "*STEP\n*STATIC\n*END STEP\n";
   const std::string base = inp::test::two_cubes_surfaces() + inp::test::linear_interaction();
   EXPECT_FALSE(check_deck(write("free.inp", base + pair + step), std::nullopt).error);
-
-  const DeckCheck friction = check_deck(write("f.inp", base + "*FRICTION\n0.3, 1e5\n" + pair + step), std::nullopt);
-  ASSERT_TRUE(friction.error);
-  EXPECT_EQ(friction.error->line, 36);
-  EXPECT_EQ(friction.error->keyword, "*FRICTION");
-  EXPECT_NE(friction.error->message.find("mu = 0.3"), std::string::npos) << friction.error->message;
-
-  // Friction from a later step's *CHANGE FRICTION is refused at that card (line 44).
-  const DeckCheck changed = check_deck(
+  EXPECT_FALSE(check_deck(write("f.inp", base + "*FRICTION\n0.3, 1e5\n" + pair + step), std::nullopt).error);
+  EXPECT_FALSE(check_deck(
       write("c.inp", base + pair + step + "*STEP\n*STATIC\n*CHANGE FRICTION, INTERACTION=SI\n*FRICTION\n0.1\n*END STEP\n"),
-      std::nullopt);
-  ASSERT_TRUE(changed.error);
-  EXPECT_EQ(changed.error->line, 44);
-  EXPECT_NE(changed.error->message.find("step 2"), std::string::npos) << changed.error->message;
+      std::nullopt).error);
 
-  const std::string tied = "*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n1e7\n*FRICTION\n0.3, 1e5\n";
+  const std::string tied = "*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n";
+  const DeckCheck no_stiffness = check_deck(
+      write("k.inp", inp::test::two_cubes_surfaces() + tied + "*FRICTION\n0.3, 1e5\n" + pair + step), std::nullopt);
+  ASSERT_TRUE(no_stiffness.error);
+  EXPECT_EQ(no_stiffness.error->line, 34);
+  EXPECT_EQ(no_stiffness.error->keyword, "*SURFACE BEHAVIOR");
+
   Recorder sink;
-  const RunOutcome r = run_job(request(write("t.inp", inp::test::two_cubes_surfaces() + tied + pair + step)), sink, no_cancel);
+  const RunOutcome r = run_job(request(write("t.inp", inp::test::two_cubes_surfaces() + tied + "1e7\n" + pair + step)), sink, no_cancel);
   EXPECT_EQ(r.exit_code, 2);
   ASSERT_TRUE(r.deck_error);
-  EXPECT_EQ(r.deck_error->line, 33);
-  EXPECT_EQ(r.deck_error->keyword, "*SURFACE INTERACTION");
+  EXPECT_EQ(r.deck_error->line, 34);
+  EXPECT_EQ(r.deck_error->keyword, "*SURFACE BEHAVIOR");
+  EXPECT_NE(r.deck_error->message.find("*FRICTION"), std::string::npos) << r.deck_error->message;
 }
 
 TEST_F(RunJobTest, RaisedCancelFlagStopsANonlinearRun) {

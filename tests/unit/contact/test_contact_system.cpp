@@ -59,7 +59,16 @@ std::vector<output::ContactPointRecord> committed_points(const ContactSystem& sy
 
 class EveryScheme : public ::testing::TestWithParam<const char*> {};
 
-void check_tangent_by_finite_differences(const char* scheme_name, Real stabilisation) {
+/// Friction on the two blocks' pair from the first step on.
+void add_friction(model::Model& m, Real mu, Real stick_slope) {
+  model::Friction f;
+  f.mu = mu;
+  f.stick_slope = stick_slope;
+  for (auto& step : m.steps) step.interaction_friction = {f};
+}
+
+void check_tangent_by_finite_differences(const char* scheme_name, Real stabilisation,
+                                         Real mu = 0) {
   fixtures::TwoBlocks t;
   t.lower = {"C3D8", 3, 1};
   t.upper = {"C3D20", 2, 1};
@@ -67,9 +76,14 @@ void check_tangent_by_finite_differences(const char* scheme_name, Real stabilisa
   t.rotation_deg = 17;
   t.offset_x = 0.05;
   model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(scheme_name));
+  if (mu > 0) add_friction(m, mu, 3e4);
   ContactSystem sys(m);
-  const VecX u = pressed(m, 2e-3, 3);
+  sys.begin_step(m.steps[0]);
+  VecX u = pressed(m, 2e-3, 3);
   sys.begin_increment(0.5 * u, {.step = 2}, 1);
+  if (mu > 0 && mu < 1)  // slipping: the upper block dragged well beyond the stick range
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) u(3 * n) += 1e-3;
   sys.set_stabilisation(stabilisation);
   VecX f0;
   MatX K;
@@ -93,7 +107,13 @@ void check_tangent_by_finite_differences(const char* scheme_name, Real stabilisa
     ++checked;
   }
   EXPECT_GT(checked, 50);
-  EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-10 * scale);
+  if (mu > 0) {  // the case is what its name says
+    EXPECT_GT(sys.n_sticking() + sys.n_slipping(), 0);
+    EXPECT_EQ(sys.n_slipping() > 0, mu < 1) << sys.n_sticking() << " stick, " << sys.n_slipping();
+  }
+  if (mu == 0 || sys.n_slipping() == 0) {
+    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-10 * scale);
+  }
 }
 
 TEST_P(EveryScheme, AssembledTangentMatchesFiniteDifferences) {
@@ -102,6 +122,14 @@ TEST_P(EveryScheme, AssembledTangentMatchesFiniteDifferences) {
 
 TEST_P(EveryScheme, AssembledTangentWithStabilisationSpringsMatchesFiniteDifferences) {
   check_tangent_by_finite_differences(GetParam(), 0.3);
+}
+
+TEST_P(EveryScheme, AssembledTangentWithStickingFrictionMatchesFiniteDifferences) {
+  check_tangent_by_finite_differences(GetParam(), 0, 100);
+}
+
+TEST_P(EveryScheme, AssembledTangentWithSlippingFrictionMatchesFiniteDifferences) {
+  check_tangent_by_finite_differences(GetParam(), 0, 0.002);
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactSystem, EveryScheme,

@@ -285,6 +285,8 @@ model::Model with_pair(model::ContactPair::Type type) {
   auto m = test::two_tets();
   model::ContactPair pair;
   pair.type = type;
+  if (type == model::ContactPair::Type::NodeToSurface)  // as the reader sets a TYPE's default
+    pair.scheme.kind = model::ContactScheme::Kind::NodeToSurface;
   m.contact_pairs.push_back(pair);
   return m;
 }
