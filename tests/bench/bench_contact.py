@@ -57,10 +57,14 @@ def hertz_p0_error(run, name, nodal_path):
 
 
 def kontakt_timing(run, name):
-    """(phase times of the done event, mean first iteration of an increment, mean later one)."""
+    """(phase times of the done event, mean first iteration of an increment, mean later one), or
+    None when the run wrote no event log (the ccx stand-in of the self-test writes none)."""
     import json
     first, later, previous, times = [], [], 0.0, {}
-    with open(os.path.join(run.result_dir, name + ".log.jsonl")) as f:
+    path = os.path.join(run.result_dir, name + ".log.jsonl")
+    if not os.path.exists(path) and os.path.exists(os.path.join(run.result_dir, name + ".fake.log")):
+        return None
+    with open(path) as f:
         for line in f:
             e = json.loads(line)
             if e["event"] == "iteration":
@@ -145,16 +149,20 @@ def main():
 def report_sphere(name, ccx, ours):
     """Prints the contact-heavy model's figures; False when a figure cannot be read."""
     try:
-        times, first, later = kontakt_timing(ours, name)
+        timing = kontakt_timing(ours, name)
         errors = {label: hertz_p0_error(run, name, contact_fields.result_file(run.result_dir, name))
                   for label, run in (("ccx", ccx), ("kontakt", ours))}
     except (OSError, KeyError, ValueError) as e:
         print(f"{name:18s} figures not read: {e}")
         return False
-    split = ", ".join(f"{k} {v:.2f}" for k, v in times.items())
-    print(f"{name:18s} kontakt time split (s): {split}")
-    print(f"{name:18s} kontakt iterations: first of an increment {first:.2f} s, later ones "
-          f"{later:.2f} s (ratio {first / later:.2f})")
+    if timing is None:
+        print(f"{name:18s} no event log: a ccx stand-in ran as kontakt")
+    else:
+        times, first, later = timing
+        split = ", ".join(f"{k} {v:.2f}" for k, v in times.items())
+        print(f"{name:18s} kontakt time split (s): {split}")
+        print(f"{name:18s} kontakt iterations: first of an increment {first:.2f} s, later ones "
+              f"{later:.2f} s (ratio {first / later:.2f})")
     print(f"{name:18s} peak nodal pressure against Hertz p0: ccx {errors['ccx']:+.2%}, "
           f"kontakt {errors['kontakt']:+.2%}")
     return True
