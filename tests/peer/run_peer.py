@@ -22,6 +22,12 @@ the blocks of the last printed time are compared, the displacement blocks decide
 1e-2) and the worst other final block (stresses, forces, contact output) is reported in the
 detail; increments and iterations are printed side by side with ccx's.
 
+--tie is the *TIE set (select_decks.py's tie rule): the derived deck select_decks.tie_deck()
+writes (perturbation steps dropped, prints added to decks that print none) runs through both
+solvers; a deck without NLGEOM is compared like the linear set (every block, 1e-4), one with
+NLGEOM like the nonlinear set (blocks at common times, 1e-3); increments and iterations are
+printed side by side with ccx's.
+
 --reference-only runs no kontakt: it compares ccx 2.20's output with the suite's 2.11
 .dat.ref files for the qualifying decks and counts agreement at 1e-4 and 1e-3 (a check of this
 harness and of how stable ccx's own output is; exit code 0 unless a reference could not be
@@ -52,11 +58,16 @@ def direct_solver(text):
     return ITERATIVE_SOLVER.sub(r"\1", text)
 
 
-def stage_deck(source_dir, name, dest, transform=None):
-    """Writes NAME.inp and its includes, decompressed, into dest."""
+def deck_text(source_dir, name, args):
+    """The deck's own text as this run's set uses it (the tie set's derived deck)."""
+    deck_file = select_decks.deck_path(source_dir, name)
+    return select_decks.tie_deck(deck_file) if args.tie else select_decks.read_text(deck_file)
+
+
+def stage_deck(source_dir, name, dest, text, transform=None):
+    """Writes NAME.inp (`text`) and its includes, decompressed, into dest."""
     os.makedirs(dest, exist_ok=True)
     deck_file = select_decks.deck_path(source_dir, name)
-    text = select_decks.read_text(deck_file)
     with open(os.path.join(dest, name + ".inp"), "w") as f:
         f.write(transform(text) if transform else text)
     for inc in select_decks.included_files(deck_file):
@@ -66,12 +77,12 @@ def stage_deck(source_dir, name, dest, transform=None):
             f.write(select_decks.read_text(os.path.join(source_dir, inc)))
 
 
-def deck_digest(source_dir, name):
+def deck_digest(source_dir, name, text):
+    """Hash of the deck as run (`text`) and its includes' content."""
     deck_file = select_decks.deck_path(source_dir, name)
-    digest = hashlib.sha256()
-    for part in [deck_file] + [os.path.join(source_dir, i)
-                               for i in select_decks.included_files(deck_file)]:
-        digest.update(select_decks.read_text(part).encode())
+    digest = hashlib.sha256(text.encode())
+    for part in select_decks.included_files(deck_file):
+        digest.update(select_decks.read_text(os.path.join(source_dir, part)).encode())
     return digest.hexdigest()[:16]
 
 
@@ -83,15 +94,16 @@ def work_root(work, source_dir):
         os.path.abspath(source_dir).encode()).hexdigest()[:8])
 
 
-def ccx_reference(source_dir, name, work):
+def ccx_reference(source_dir, name, args):
     """Path of ccx 2.20's .dat for the deck, computed once per deck content (cached)."""
-    work = work_root(work, source_dir)
-    cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name)}.dat")
+    work = work_root(args.work, source_dir)
+    text = deck_text(source_dir, name, args)
+    cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name, text)}.dat")
     if os.path.exists(cached):
         return cached
     run_dir = os.path.join(work, name, "ccx")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir, direct_solver)
+    stage_deck(source_dir, name, run_dir, text, direct_solver)
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     try:
         proc = run_killable(["ccx", "-i", name], run_dir, CCX_TIMEOUT, env)
@@ -173,12 +185,13 @@ def compare_contact(ours_text, ref_text, tolerance):
 def run_one(source_dir, name, args):
     """(status, worst error or None, detail) for one deck."""
     try:
-        reference = ccx_reference(source_dir, name, args.work)
+        reference = ccx_reference(source_dir, name, args)
     except Exception as e:  # a broken reference is a setup failure of this deck
         return "ERROR", None, f"reference: {e}"
     run_dir = os.path.join(work_root(args.work, source_dir), name, "kontakt")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir)
+    text = deck_text(source_dir, name, args)
+    stage_deck(source_dir, name, run_dir, text)
     try:
         proc = run_killable([args.kontakt, "solve", name + ".inp", "-o", "out", "--quiet",
                              "--threads", "1"], run_dir, args.timeout)
@@ -194,13 +207,16 @@ def run_one(source_dir, name, args):
         return "ERROR", None, f"exit 0 but no out/{name}.dat"
     with open(ours_path, errors="replace") as f, open(reference) as g:
         ours_text, ref_text = f.read(), g.read()
+    nonlinear = args.nlgeom or (args.tie and select_decks.has_nlgeom_step(
+        select_decks.deck_path(source_dir, name), text))
     if args.contact:
         result, detail = compare_contact(ours_text, ref_text, args.tolerance)
     else:
-        result = compare_dat.compare_blocks(ours_text, ref_text, args.tolerance,
-                                            common_times_only=args.nlgeom)
+        tolerance = args.tolerance or (1e-3 if nonlinear else 1e-4)
+        result = compare_dat.compare_blocks(ours_text, ref_text, tolerance,
+                                            common_times_only=nonlinear)
         detail = describe(result) if not result.passed else ""
-    if args.nlgeom or args.contact:  # incrementation side by side: ours vs ccx
+    if args.nlgeom or args.contact or args.tie:  # incrementation side by side: ours vs ccx
         ours_sta = sta_counts(os.path.join(run_dir, "out", name + ".sta"))
         ccx_sta = sta_counts(os.path.join(work_root(args.work, source_dir), name, "ccx",
                                               name + ".sta"))
@@ -213,7 +229,7 @@ def run_one(source_dir, name, args):
 def reference_only(source_dir, name, args):
     """(status, worst error or None, detail): ccx 2.20 against the suite's 2.11 .dat.ref."""
     try:
-        reference = ccx_reference(source_dir, name, args.work)
+        reference = ccx_reference(source_dir, name, args)
         old = select_decks.read_text(os.path.join(source_dir, name + ".dat.ref"))
     except Exception as e:
         return "ERROR", None, str(e)
@@ -249,18 +265,23 @@ def main():
                    help="the nonlinear set: decks with NLGEOM steps, final blocks compared")
     p.add_argument("--contact", action="store_true",
                    help="the frictionless contact set: final displacement blocks compared")
+    p.add_argument("--tie", action="store_true",
+                   help="the *TIE set: derived decks, linear or nonlinear comparison per deck")
     p.add_argument("--tolerance", type=float, default=None,
-                   help="largest block error (default 1e-4, --nlgeom 1e-3, --contact 1e-2)")
+                   help="largest block error (default 1e-4, --nlgeom 1e-3, --contact 1e-2, "
+                        "--tie 1e-4 or with NLGEOM 1e-3)")
     p.add_argument("--timeout", type=int, default=300, help="kontakt time limit per deck (s)")
     p.add_argument("--jobs", type=int, default=2, help="decks run in parallel")
     p.add_argument("--list", action="store_true", help="print the rule's verdict per deck and exit")
     p.add_argument("--reference-only", action="store_true",
                    help="no kontakt: compare ccx 2.20 with the suite's 2.11 .dat.ref files")
     args = p.parse_args()
-    if args.tolerance is None:
+    if args.nlgeom + args.contact + args.tie > 1:
+        p.error("--nlgeom, --contact and --tie are separate sets")
+    if args.tie and args.reference_only:
+        p.error("--reference-only compares the suite's decks as they are; --tie derives them")
+    if args.tolerance is None and not args.tie:  # the tie set's default depends on the deck
         args.tolerance = 1e-3 if args.nlgeom else 1e-2 if args.contact else 1e-4
-    if args.nlgeom and args.contact:
-        p.error("--nlgeom and --contact are separate sets")
 
     folders = [args.suite] + args.extra_decks
     missing = [d for d in folders if not os.path.isdir(d)]
@@ -270,7 +291,8 @@ def main():
         return 1
     decks = []
     for folder in folders:
-        good, excluded = select_decks.qualifying_decks(folder, args.nlgeom, args.contact)
+        good, excluded = select_decks.qualifying_decks(folder, args.nlgeom, args.contact,
+                                                       args.tie)
         if args.list:
             for name in sorted(set(good) | set(excluded)):
                 print(f"{name:24s} {'qualifies' if name in good else 'excluded: ' + excluded[name]}")
@@ -304,7 +326,8 @@ def main():
         types = ",".join(select_decks.element_types(select_decks.deck_path(folder, name)))
         shown = "-" if worst is None else f"{worst:.2e}"
         print(f"{label(folder, name, args):20s} {types:16s} {status:8s} {shown:>11s}  {detail}", flush=True)
-    print(f"work folder {args.work}; tolerance {args.tolerance:g} on "
+    tolerance = f"{args.tolerance:g}" if args.tolerance else "1e-4 (NLGEOM: 1e-3)"
+    print(f"work folder {args.work}; tolerance {tolerance} on "
           "max|ours - ccx| / max|ccx| per .dat block")
     print(f"{passed} passed, {len(decks) - passed} failed")
     return 0 if passed == len(decks) else 1
