@@ -1,5 +1,5 @@
-"""Two meshed bodies and one frictionless penalty contact pair between them, written as a
-ccx/Abaqus deck. The model classes (cube, punch, patch, hertz) fill a TwoBodyModel; this file
+"""Two meshed bodies and one frictionless penalty contact pair (or a *TIE) between them,
+written as a ccx/Abaqus deck. The model classes (cube, punch, patch, hertz) fill a TwoBodyModel; this file
 knows nothing about any particular model.
 
 Numbering: the lower body's nodes and elements come first (ids 1..n), the upper body's
@@ -11,7 +11,8 @@ Contact: `*SURFACE INTERACTION, NAME=CONTACT` with `*SURFACE BEHAVIOR,
 PRESSURE-OVERCLOSURE=LINEAR` (K, sigma_inf) and one `*CONTACT PAIR, INTERACTION=CONTACT,
 TYPE=...` with the face-based surfaces SLAVE and MASTER (the boundary faces of one body whose
 corner nodes all lie in a node set). No SCHEME= parameter is written: ccx does not know it;
-kontakt gets the scheme from `--scheme`.
+kontakt gets the scheme from `--scheme`. With `tie` set, the bodies are bonded by `*TIE,
+NAME=tie` (slave SLAVE, master MASTER; ccx's MPC tie, default position tolerance) instead.
 """
 import math
 import os
@@ -50,11 +51,13 @@ class TwoBodyModel:
     max_increments: int = 100             # *STEP, INC=
     fixed: list = field(default_factory=list)      # [(body, nset, first dof, last dof, value)]
     pressures: list = field(default_factory=list)  # [(body, nset, pressure)] on boundary faces
+    cloads: list = field(default_factory=list)     # [(body, node of that body, dof, force)]
     node_prints: list = field(default_factory=list)  # [(body, nset, "U" / "U,RF" ...)]
     el_prints: list = field(default_factory=list)    # [(body, "S")]: the whole body
     contact_print: str = ""   # e.g. "CSTR,CDIS" (empty: no *CONTACT PRINT)
     contact_file: bool = False  # *NODE FILE U and *CONTACT FILE CDIS,CSTR (frd / HDF5 fields)
     notes: list = field(default_factory=list)       # ** comment lines at the top of the deck
+    tie: str = ""             # *TIE name: the bodies are tied (MPCs), no contact pair
 
     def body(self, name):
         return {self.lower.name: self.lower, self.upper.name: self.upper}[name]
@@ -131,17 +134,24 @@ def deck_text(model):
         lines += [f"*MATERIAL, NAME={body.name}_MATERIAL", "*ELASTIC",
                   f"{fmt(body.young)}, {fmt(body.poisson)}",
                   f"*SOLID SECTION, ELSET={body.name}, MATERIAL={body.name}_MATERIAL"]
-    lines += ["*SURFACE INTERACTION, NAME=CONTACT",
-              "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
-              f"{fmt(model.penalty)}, {fmt(model.tension)}",
-              f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}",
-              "SLAVE, MASTER"]
+    if model.tie:
+        lines += [f"*TIE, NAME={model.tie}", "SLAVE, MASTER"]
+    else:
+        lines += ["*SURFACE INTERACTION, NAME=CONTACT",
+                  "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
+                  f"{fmt(model.penalty)}, {fmt(model.tension)}",
+                  f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}",
+                  "SLAVE, MASTER"]
     lines.append(f"*STEP{', NLGEOM' if model.nlgeom else ''}, INC={model.max_increments}")
     lines += ["*STATIC", ", ".join(fmt(v) for v in model.increment)]
     if model.fixed:
         lines.append("*BOUNDARY")
         for body, nset, first, last, value in model.fixed:
             lines.append(f"{_set_name(body, nset)}, {first}, {last}, {fmt(value)}")
+    if model.cloads:
+        lines.append("*CLOAD")
+        for body, nid, dof, force in model.cloads:
+            lines.append(f"{model.node_offset(body) + nid}, {dof}, {fmt(force)}")
     for body, nset, pressure in model.pressures:
         lines.append("*DLOAD")
         lines += [f"{e}, P{f}, {fmt(pressure)}" for e, f in model.faces(body, nset)]
