@@ -98,15 +98,17 @@ std::vector<char> constrained_dofs(const model::Model& model) {
   return taken;
 }
 
-/// ccx's default tolerance, from the master faces of every tie that needs it (0 if none).
+/// ccx's default tolerance: one value from the master faces of every tie, also those with a
+/// tolerance of their own (0 when no tie needs it).
 Real default_tolerance(const model::Model& model) {
+  if (std::all_of(model.ties.begin(), model.ties.end(),
+                  [](const model::Tie& tie) { return tie.position_tolerance.has_value(); }))
+    return 0;
   std::vector<SurfaceFace> faces;
   for (const model::Tie& tie : model.ties) {
-    if (tie.position_tolerance) continue;
     const ContactSurface master = make_contact_surface(model, model.surfaces.at(tie.master));
     faces.insert(faces.end(), master.faces.begin(), master.faces.end());
   }
-  if (faces.empty()) return 0;
   return kDefaultToleranceFraction * typical_master_size(faces, model.mesh.coords);
 }
 

@@ -64,10 +64,13 @@ def deck_text(source_dir, name, args):
     return select_decks.tie_deck(deck_file) if args.tie else select_decks.read_text(deck_file)
 
 
-def stage_deck(source_dir, name, dest, text, transform=None):
-    """Writes NAME.inp (`text`) and its includes, decompressed, into dest."""
+def stage_deck(source_dir, name, dest, transform=None, text=None):
+    """Writes NAME.inp (its own text, or `text` standing for it) and its includes,
+    decompressed, into dest."""
     os.makedirs(dest, exist_ok=True)
     deck_file = select_decks.deck_path(source_dir, name)
+    if text is None:
+        text = select_decks.read_text(deck_file)
     with open(os.path.join(dest, name + ".inp"), "w") as f:
         f.write(transform(text) if transform else text)
     for inc in select_decks.included_files(deck_file):
@@ -103,7 +106,7 @@ def ccx_reference(source_dir, name, args):
         return cached
     run_dir = os.path.join(work, name, "ccx")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir, text, direct_solver)
+    stage_deck(source_dir, name, run_dir, direct_solver, text)
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     try:
         proc = run_killable(["ccx", "-i", name], run_dir, CCX_TIMEOUT, env)
@@ -191,7 +194,7 @@ def run_one(source_dir, name, args):
     run_dir = os.path.join(work_root(args.work, source_dir), name, "kontakt")
     shutil.rmtree(run_dir, ignore_errors=True)
     text = deck_text(source_dir, name, args)
-    stage_deck(source_dir, name, run_dir, text)
+    stage_deck(source_dir, name, run_dir, text=text)
     try:
         proc = run_killable([args.kontakt, "solve", name + ".inp", "-o", "out", "--quiet",
                              "--threads", "1"], run_dir, args.timeout)

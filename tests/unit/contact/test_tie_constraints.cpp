@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "assembly/dof_map.hpp"
 #include "contact/tie_constraints.hpp"
@@ -243,6 +245,41 @@ TEST(ApplyTies, NodesOutOfReachStayFreeWithAWarningNamingThem) {
   EXPECT_TRUE(has_warning(far, "9 slave node(s) of SLAVE have no master face of MASTER within "
                                "the position tolerance 0.001 and stay free"));
   EXPECT_NEAR(far.mesh.coords(node(far, 100000), 2), 1.002, 1e-15);
+}
+
+TEST(ApplyTies, DefaultToleranceAveragesOverTheMastersOfEveryTie) {
+  // ccx computes one default from all ties' master faces, also those of a tie with a
+  // tolerance of its own. Lower top: 16 faces of 0.25; upper top: 4 faces of 0.5.
+  fixtures::TwoBlocks t;
+  t.lower = {"C3D8", 4, 1};
+  t.upper = {"C3D8", 2, 1};
+  t.gap = 0.004;  // beyond every default here: the warning states the tolerance
+  const auto faces_of = [](const model::Model& m, const std::string& elset, int face) {
+    model::Surface s{elset, model::Surface::Kind::ElementFaces, {}, {}, {}};
+    for (int e : m.element_sets.at(elset).elements) s.faces.push_back({e, face});
+    return s;
+  };
+  const auto tolerance_in_warning = [](const model::Model& m, Real tolerance) {
+    char text[80];
+    std::snprintf(text, sizeof text, "within the position tolerance %.4g (the default", tolerance);
+    return has_warning(m, text);
+  };
+  const Real square = (1 / (3 * std::sqrt(2.0)) + 1.0 / 3) / 2;  // a unit square's size
+  model::Model alone = tied_blocks(t);
+  apply_ties(alone);
+  EXPECT_TRUE(tolerance_in_warning(alone, kDefaultToleranceFraction * square * 0.25));
+  model::Model both = tied_blocks(t);
+  both.surfaces["LOWERBOTTOM"] = faces_of(both, "LOWER_BOTTOM", 1);
+  both.surfaces["UPPERTOP"] = faces_of(both, "UPPER_TOP", 2);
+  model::Tie other;
+  other.name = "OTHER";
+  other.slave = "LOWERBOTTOM";
+  other.master = "UPPERTOP";
+  other.position_tolerance = 0.5;
+  both.ties.push_back(other);
+  apply_ties(both);
+  const Real mean = (32 * 0.25 + 8 * 0.5) / 40;  // over the triangles of both masters
+  EXPECT_TRUE(tolerance_in_warning(both, kDefaultToleranceFraction * square * mean));
 }
 
 TEST(ApplyTies, ConstrainedSlaveDofsAreLeftAsCcxDoes) {
