@@ -6,6 +6,7 @@
 #include "app/monitor_files.hpp"
 #include "app/result_writers.hpp"
 #include "contact/adjust_nodes.hpp"
+#include "contact/tie_constraints.hpp"
 #include "core/error.hpp"
 #include "inp/read_deck.hpp"
 #include "linsolve/blas_threads.hpp"
@@ -23,9 +24,11 @@ DeckError deck_error_of(const InputError& e) {
 }
 
 /// The deck's model, set up for the analysis: the scheme override applied to every contact
-/// pair, and the slave nodes ADJUST asks for moved onto their master surfaces.
+/// pair, the *TIE constraints generated (their slave nodes moved), and the slave nodes ADJUST
+/// asks for moved onto their master surfaces.
 model::Model read_model(const fs::path& deck, const std::optional<std::string>& scheme) {
   model::Model model = inp::read_deck(deck);
+  contact::apply_ties(model);
   contact::adjust_slave_nodes(model);
   if (!scheme) return model;
   const auto parsed = model::contact_scheme_from_name(*scheme);

@@ -38,17 +38,23 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
   }
 
   // Dependent dofs: the first term of each equation, expressed by the remaining terms.
-  std::map<int, const model::Equation*> dependent_of;
+  using model::Equation;
+  std::map<int, const Equation*> dependent_of;
   for (const auto& eq : model.equations) {
     const auto& lead = eq.terms.front();
     const int d = 3 * lead.node + lead.dof;
     if (kind[d] == Kind::Prescribed)
-      throw InputError(eq.where, "*EQUATION",
-                       "the dependent dof (first term, " + describe(model, d) +
-                           ") is also prescribed by *BOUNDARY");
-    if (dependent_of.count(d))
-      throw InputError(eq.where, "*EQUATION",
-                       "dof " + describe(model, d) + " is the dependent term of two equations");
+      throw InputError(eq.where, eq.keyword,
+                       "the dependent dof of this constraint (" + describe(model, d) +
+                           ") is also prescribed by *BOUNDARY in this step");
+    if (dependent_of.count(d)) {
+      const Equation& first = *dependent_of.at(d);
+      throw InputError(eq.where, eq.keyword,
+                       "dof " + describe(model, d) +
+                           " is the dependent term of two equations (the other: " +
+                           first.keyword + " at " + first.where.file + ":" +
+                           std::to_string(first.where.line) + ")");
+    }
     dependent_of[d] = &eq;
     kind[d] = Kind::Dependent;
   }
@@ -74,8 +80,9 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
   auto resolve = [&](auto&& self, int d) -> const std::vector<DofTerm>& {
     if (state[d] == 2) return expr[d];
     if (state[d] == 1)
-      throw InputError(dependent_of.at(d)->where, "*EQUATION",
-                       "equations form a cycle through " + describe(model, d));
+      throw InputError(dependent_of.at(d)->where, dependent_of.at(d)->keyword,
+                       "equations form a cycle through " + describe(model, d) +
+                           " (each dependent dof is expressed through the next)");
     state[d] = 1;
     std::vector<DofTerm> out;
     switch (kind[d]) {
@@ -86,7 +93,7 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
         const auto& eq = *dependent_of.at(d);
         const Real lead = eq.terms.front().coef;
         if (lead == 0)
-          throw InputError(eq.where, "*EQUATION", "the first coefficient must not be zero");
+          throw InputError(eq.where, eq.keyword, "the first coefficient must not be zero");
         for (std::size_t k = 1; k < eq.terms.size(); ++k) {
           const int other = 3 * eq.terms[k].node + eq.terms[k].dof;
           for (const DofTerm& t : self(self, other))

@@ -1,5 +1,5 @@
-// Handlers, one per keyword; grouped by file: kw_mesh, kw_material, kw_contact, kw_step,
-// kw_controls, kw_loads, kw_output. Each throws InputError for malformed input.
+// Handlers, one per keyword; grouped by file: kw_mesh, kw_material, kw_contact, kw_tie,
+// kw_step, kw_controls, kw_loads, kw_output. Each throws InputError for malformed input.
 #pragma once
 
 #include "inp/deck_state.hpp"
@@ -28,6 +28,9 @@ void handle_surface_behavior(const Record&, DeckState&);
 void handle_friction(const Record&, DeckState&);
 void handle_change_friction(const Record&, DeckState&);
 void handle_contact_pair(const Record&, DeckState&);
+
+// kw_tie.cpp
+void handle_tie(const Record&, DeckState&);
 
 // kw_step.cpp
 void handle_step(const Record&, DeckState&);

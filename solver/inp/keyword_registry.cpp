@@ -16,7 +16,7 @@ constexpr auto None = Block::None;
 constexpr auto Mat = Block::Material;
 constexpr auto Inter = Block::Interaction;
 
-constexpr std::array<KeywordSpec, 40> kKeywords{{
+constexpr std::array<KeywordSpec, 41> kKeywords{{
     {"HEADING", M, None, handle_heading},
     {"NODE", M, None, handle_node},
     {"ELEMENT", M, None, handle_element},
@@ -33,6 +33,7 @@ constexpr std::array<KeywordSpec, 40> kKeywords{{
     {"SURFACEBEHAVIOR", M, Inter, handle_surface_behavior},
     {"FRICTION", A, Inter, handle_friction},  // in a step: after *CHANGE FRICTION
     {"CONTACTPAIR", M, None, handle_contact_pair},
+    {"TIE", M, None, handle_tie},
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},
     {"EQUATION", M, None, handle_equation},
     {"AMPLITUDE", A, None, handle_amplitude},

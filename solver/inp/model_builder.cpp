@@ -5,6 +5,7 @@
 #include "inp/contact_builder.hpp"
 #include "inp/element_names.hpp"
 #include "inp/record_access.hpp"
+#include "inp/tie_builder.hpp"
 
 namespace kontakt::inp {
 
@@ -234,6 +235,7 @@ model::Model finish_model(DeckState& state) {
   assign_sections(state);
   require_sections(state);
   resolve_contact(state);
+  resolve_ties(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());
     for (const auto& [node, value] : state.initial_temperatures) {

@@ -14,6 +14,7 @@
 #include "element/element_type.hpp"
 #include "model/contact.hpp"
 #include "model/solution_controls.hpp"
+#include "model/tie.hpp"
 
 namespace kontakt::model {
 
@@ -93,6 +94,7 @@ struct EquationTerm {
 struct Equation {
   std::vector<EquationTerm> terms;  ///< the first term's dof is the dependent one (ccx)
   SourceLoc where;
+  std::string keyword = "*EQUATION";  ///< the card it comes from (*EQUATION, *TIE), for messages
 };
 
 /// A prescribed displacement u[node][dof] = value * amplitude(t). Fixed = value 0.
@@ -183,6 +185,8 @@ struct Model {
   std::vector<Equation> equations;
   std::vector<SurfaceInteraction> interactions;
   std::vector<ContactPair> contact_pairs;  ///< all pairs of the deck (model level, as in ccx)
+  /// *TIE, deck order; contact::apply_ties turns them into `equations` before the analysis.
+  std::vector<Tie> ties;
   /// Initial nodal temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE), size n_nodes, or
   /// empty when none were given.
   VecX initial_temperatures;

@@ -1,5 +1,5 @@
-"""Two meshed bodies and one frictionless penalty contact pair between them, written as a
-ccx/Abaqus deck. The model classes (cube, punch, patch, hertz) fill a TwoBodyModel; this file
+"""Two meshed bodies and one frictionless penalty contact pair (or a *TIE) between them,
+written as a ccx/Abaqus deck. The model classes (cube, punch, patch, hertz) fill a TwoBodyModel; this file
 knows nothing about any particular model.
 
 Numbering: the lower body's nodes and elements come first (ids 1..n), the upper body's
@@ -11,7 +11,8 @@ Contact: `*SURFACE INTERACTION, NAME=CONTACT` with `*SURFACE BEHAVIOR,
 PRESSURE-OVERCLOSURE=LINEAR` (K, sigma_inf) and one `*CONTACT PAIR, INTERACTION=CONTACT,
 TYPE=...` with the face-based surfaces SLAVE and MASTER (the boundary faces of one body whose
 corner nodes all lie in a node set). No SCHEME= parameter is written: ccx does not know it;
-kontakt gets the scheme from `--scheme`.
+kontakt gets the scheme from `--scheme`. With `tie` set, the bodies are bonded by `*TIE,
+NAME=tie` (slave SLAVE, master MASTER; ccx's MPC tie, default position tolerance) instead.
 """
 import math
 import os
@@ -50,6 +51,7 @@ class TwoBodyModel:
     max_increments: int = 100             # *STEP, INC=
     fixed: list = field(default_factory=list)      # [(body, nset, first dof, last dof, value)]
     pressures: list = field(default_factory=list)  # [(body, nset, pressure)] on boundary faces
+    cloads: list = field(default_factory=list)     # [(body, node of that body, dof, force)]
     node_prints: list = field(default_factory=list)  # [(body, nset, "U" / "U,RF" ...)]
     el_prints: list = field(default_factory=list)    # [(body, "S")]: the whole body
     contact_print: str = ""   # e.g. "CSTR,CDIS" (empty: no *CONTACT PRINT)
@@ -59,6 +61,7 @@ class TwoBodyModel:
     # further *STEPs after the first: [(increment tuple, [(body, nset, first dof, last dof,
     # value)])], each adding prescribed displacements (loads and supports carry over)
     later_steps: list = field(default_factory=list)
+    tie: str = ""             # *TIE name: the bodies are tied (MPCs), no contact pair
 
     def body(self, name):
         return {self.lower.name: self.lower, self.upper.name: self.upper}[name]
@@ -136,19 +139,23 @@ def deck_text(model):
         lines += [f"*MATERIAL, NAME={body.name}_MATERIAL", "*ELASTIC",
                   f"{fmt(body.young)}, {fmt(body.poisson)}",
                   f"*SOLID SECTION, ELSET={body.name}, MATERIAL={body.name}_MATERIAL"]
-    lines += ["*SURFACE INTERACTION, NAME=CONTACT",
-              "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
-              f"{fmt(model.penalty)}, {fmt(model.tension)}"]
-    if model.friction:
-        lines += ["*FRICTION", ", ".join(fmt(v) for v in model.friction)]
-    lines += [f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}", "SLAVE, MASTER"]
-    lines += _step_lines(model, model.increment, model.fixed, model.pressures)
+    if model.tie:
+        lines += [f"*TIE, NAME={model.tie}", "SLAVE, MASTER"]
+    else:
+        lines += ["*SURFACE INTERACTION, NAME=CONTACT",
+                  "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
+                  f"{fmt(model.penalty)}, {fmt(model.tension)}"]
+        if model.friction:
+            lines += ["*FRICTION", ", ".join(fmt(v) for v in model.friction)]
+        lines += [f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}",
+                  "SLAVE, MASTER"]
+    lines += _step_lines(model, model.increment, model.fixed, model.pressures, model.cloads)
     for increment, fixed in model.later_steps:
-        lines += _step_lines(model, increment, fixed, [])
+        lines += _step_lines(model, increment, fixed, [], [])
     return "\n".join(lines) + "\n"
 
 
-def _step_lines(model, increment, fixed, pressures):
+def _step_lines(model, increment, fixed, pressures, cloads):
     """One *STEP with its supports, loads and output requests."""
     fmt = meshgen._fmt
     lines = [f"*STEP{', NLGEOM' if model.nlgeom else ''}, INC={model.max_increments}",
@@ -157,6 +164,10 @@ def _step_lines(model, increment, fixed, pressures):
         lines.append("*BOUNDARY")
         for body, nset, first, last, value in fixed:
             lines.append(f"{_set_name(body, nset)}, {first}, {last}, {fmt(value)}")
+    if cloads:
+        lines.append("*CLOAD")
+        for body, nid, dof, force in cloads:
+            lines.append(f"{model.node_offset(body) + nid}, {dof}, {fmt(force)}")
     for body, nset, pressure in pressures:
         lines.append("*DLOAD")
         lines += [f"{e}, P{f}, {fmt(pressure)}" for e, f in model.faces(body, nset)]

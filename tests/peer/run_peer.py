@@ -22,6 +22,12 @@ the blocks of the last printed time are compared, the displacement blocks decide
 1e-2) and the worst other final block (stresses, forces, contact output) is reported in the
 detail; increments and iterations are printed side by side with ccx's.
 
+--tie is the *TIE set (select_decks.py's tie rule): the derived deck select_decks.tie_deck()
+writes (perturbation steps dropped, prints added to decks that print none) runs through both
+solvers; a deck without NLGEOM is compared like the linear set (every block, 1e-4), one with
+NLGEOM like the nonlinear set (blocks at common times, 1e-3); increments and iterations are
+printed side by side with ccx's.
+
 --reference-only runs no kontakt: it compares ccx 2.20's output with the suite's 2.11
 .dat.ref files for the qualifying decks and counts agreement at 1e-4 and 1e-3 (a check of this
 harness and of how stable ccx's own output is; exit code 0 unless a reference could not be
@@ -52,37 +58,24 @@ def direct_solver(text):
     return ITERATIVE_SOLVER.sub(r"\1", text)
 
 
-def with_printed_displacements(text):
-    """A deck that prints nothing to the .dat (friction1, fricloop, ...: .frd output only)
-    gets *NODE PRINT U of every node at the end of every step, the same for ccx and kontakt,
-    so the .dat blocks can be compared; decks that print keep their own requests."""
-    lines = text.splitlines()
-    upper = [ln.strip().upper().replace(" ", "") for ln in lines]
-    if any(u.startswith(("*NODEPRINT", "*ELPRINT")) for u in upper):
-        return text
-    ids, in_nodes = [], False
-    for ln, u in zip(lines, upper):
-        if u.startswith("*"):
-            in_nodes = u.startswith("*NODE") and not u.startswith(("*NODEFILE", "*NODEOUTPUT"))
-        elif in_nodes and ln.strip() and not ln.strip().startswith("**"):
-            ids.append(int(ln.split(",")[0]))
-    out, defined = [], False
-    for ln, u in zip(lines, upper):
-        if u.startswith("*STEP") and not defined:
-            out += ["*NSET, NSET=KONTAKT_PEER_NODES"]
-            out += [", ".join(str(i) for i in ids[k:k + 16]) for k in range(0, len(ids), 16)]
-            defined = True
-        if u.startswith("*ENDSTEP"):
-            out += ["*NODE PRINT, NSET=KONTAKT_PEER_NODES", "U"]
-        out.append(ln)
-    return "\n".join(out) + "\n"
+def deck_text(source_dir, name, args):
+    """The deck's text as this run's set uses it: the tie set's derived deck, the contact
+    set's with prints added to decks that print nothing, else the deck's own."""
+    deck_file = select_decks.deck_path(source_dir, name)
+    if args.tie:
+        return select_decks.tie_deck(deck_file)
+    if args.contact:
+        return select_decks.with_prints(deck_file, select_decks.read_text(deck_file))
+    return select_decks.read_text(deck_file)
 
 
-def stage_deck(source_dir, name, dest, transform=None):
-    """Writes NAME.inp and its includes, decompressed, into dest."""
+def stage_deck(source_dir, name, dest, transform=None, text=None):
+    """Writes NAME.inp (its own text, or `text` standing for it) and its includes,
+    decompressed, into dest."""
     os.makedirs(dest, exist_ok=True)
     deck_file = select_decks.deck_path(source_dir, name)
-    text = select_decks.read_text(deck_file)
+    if text is None:
+        text = select_decks.read_text(deck_file)
     with open(os.path.join(dest, name + ".inp"), "w") as f:
         f.write(transform(text) if transform else text)
     for inc in select_decks.included_files(deck_file):
@@ -92,12 +85,12 @@ def stage_deck(source_dir, name, dest, transform=None):
             f.write(select_decks.read_text(os.path.join(source_dir, inc)))
 
 
-def deck_digest(source_dir, name):
+def deck_digest(source_dir, name, text):
+    """Hash of the deck as run (`text`) and its includes' content."""
     deck_file = select_decks.deck_path(source_dir, name)
-    digest = hashlib.sha256()
-    for part in [deck_file] + [os.path.join(source_dir, i)
-                               for i in select_decks.included_files(deck_file)]:
-        digest.update(select_decks.read_text(part).encode())
+    digest = hashlib.sha256(text.encode())
+    for part in select_decks.included_files(deck_file):
+        digest.update(select_decks.read_text(os.path.join(source_dir, part)).encode())
     return digest.hexdigest()[:16]
 
 
@@ -109,16 +102,16 @@ def work_root(work, source_dir):
         os.path.abspath(source_dir).encode()).hexdigest()[:8])
 
 
-def ccx_reference(source_dir, name, work):
+def ccx_reference(source_dir, name, args):
     """Path of ccx 2.20's .dat for the deck, computed once per deck content (cached)."""
-    work = work_root(work, source_dir)
-    cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name)}.dat")
+    work = work_root(args.work, source_dir)
+    text = deck_text(source_dir, name, args)
+    cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name, text)}.dat")
     if os.path.exists(cached):
         return cached
     run_dir = os.path.join(work, name, "ccx")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir,
-               lambda text: with_printed_displacements(direct_solver(text)))
+    stage_deck(source_dir, name, run_dir, direct_solver, text)
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     try:
         proc = run_killable(["ccx", "-i", name], run_dir, CCX_TIMEOUT, env)
@@ -200,12 +193,13 @@ def compare_contact(ours_text, ref_text, tolerance):
 def run_one(source_dir, name, args):
     """(status, worst error or None, detail) for one deck."""
     try:
-        reference = ccx_reference(source_dir, name, args.work)
+        reference = ccx_reference(source_dir, name, args)
     except Exception as e:  # a broken reference is a setup failure of this deck
         return "ERROR", None, f"reference: {e}"
     run_dir = os.path.join(work_root(args.work, source_dir), name, "kontakt")
     shutil.rmtree(run_dir, ignore_errors=True)
-    stage_deck(source_dir, name, run_dir, with_printed_displacements)
+    text = deck_text(source_dir, name, args)
+    stage_deck(source_dir, name, run_dir, text=text)
     try:
         proc = run_killable([args.kontakt, "solve", name + ".inp", "-o", "out", "--quiet",
                              "--threads", "1"], run_dir, args.timeout)
@@ -221,13 +215,16 @@ def run_one(source_dir, name, args):
         return "ERROR", None, f"exit 0 but no out/{name}.dat"
     with open(ours_path, errors="replace") as f, open(reference) as g:
         ours_text, ref_text = f.read(), g.read()
+    nonlinear = args.nlgeom or (args.tie and select_decks.has_nlgeom_step(
+        select_decks.deck_path(source_dir, name), text))
     if args.contact:
         result, detail = compare_contact(ours_text, ref_text, args.tolerance)
     else:
-        result = compare_dat.compare_blocks(ours_text, ref_text, args.tolerance,
-                                            common_times_only=args.nlgeom)
+        tolerance = args.tolerance or (1e-3 if nonlinear else 1e-4)
+        result = compare_dat.compare_blocks(ours_text, ref_text, tolerance,
+                                            common_times_only=nonlinear)
         detail = describe(result) if not result.passed else ""
-    if args.nlgeom or args.contact:  # incrementation side by side: ours vs ccx
+    if args.nlgeom or args.contact or args.tie:  # incrementation side by side: ours vs ccx
         ours_sta = sta_counts(os.path.join(run_dir, "out", name + ".sta"))
         ccx_sta = sta_counts(os.path.join(work_root(args.work, source_dir), name, "ccx",
                                               name + ".sta"))
@@ -240,7 +237,7 @@ def run_one(source_dir, name, args):
 def reference_only(source_dir, name, args):
     """(status, worst error or None, detail): ccx 2.20 against the suite's 2.11 .dat.ref."""
     try:
-        reference = ccx_reference(source_dir, name, args.work)
+        reference = ccx_reference(source_dir, name, args)
         old = select_decks.read_text(os.path.join(source_dir, name + ".dat.ref"))
     except Exception as e:
         return "ERROR", None, str(e)
@@ -276,18 +273,23 @@ def main():
                    help="the nonlinear set: decks with NLGEOM steps, final blocks compared")
     p.add_argument("--contact", action="store_true",
                    help="the frictionless contact set: final displacement blocks compared")
+    p.add_argument("--tie", action="store_true",
+                   help="the *TIE set: derived decks, linear or nonlinear comparison per deck")
     p.add_argument("--tolerance", type=float, default=None,
-                   help="largest block error (default 1e-4, --nlgeom 1e-3, --contact 1e-2)")
+                   help="largest block error (default 1e-4, --nlgeom 1e-3, --contact 1e-2, "
+                        "--tie 1e-4 or with NLGEOM 1e-3)")
     p.add_argument("--timeout", type=int, default=300, help="kontakt time limit per deck (s)")
     p.add_argument("--jobs", type=int, default=2, help="decks run in parallel")
     p.add_argument("--list", action="store_true", help="print the rule's verdict per deck and exit")
     p.add_argument("--reference-only", action="store_true",
                    help="no kontakt: compare ccx 2.20 with the suite's 2.11 .dat.ref files")
     args = p.parse_args()
-    if args.tolerance is None:
+    if args.nlgeom + args.contact + args.tie > 1:
+        p.error("--nlgeom, --contact and --tie are separate sets")
+    if args.tie and args.reference_only:
+        p.error("--reference-only compares the suite's decks as they are; --tie derives them")
+    if args.tolerance is None and not args.tie:  # the tie set's default depends on the deck
         args.tolerance = 1e-3 if args.nlgeom else 1e-2 if args.contact else 1e-4
-    if args.nlgeom and args.contact:
-        p.error("--nlgeom and --contact are separate sets")
 
     folders = [args.suite] + args.extra_decks
     missing = [d for d in folders if not os.path.isdir(d)]
@@ -297,7 +299,8 @@ def main():
         return 1
     decks = []
     for folder in folders:
-        good, excluded = select_decks.qualifying_decks(folder, args.nlgeom, args.contact)
+        good, excluded = select_decks.qualifying_decks(folder, args.nlgeom, args.contact,
+                                                       args.tie)
         if args.list:
             for name in sorted(set(good) | set(excluded)):
                 print(f"{name:24s} {'qualifies' if name in good else 'excluded: ' + excluded[name]}")
@@ -331,7 +334,8 @@ def main():
         types = ",".join(select_decks.element_types(select_decks.deck_path(folder, name)))
         shown = "-" if worst is None else f"{worst:.2e}"
         print(f"{label(folder, name, args):20s} {types:16s} {status:8s} {shown:>11s}  {detail}", flush=True)
-    print(f"work folder {args.work}; tolerance {args.tolerance:g} on "
+    tolerance = f"{args.tolerance:g}" if args.tolerance else "1e-4 (NLGEOM: 1e-3)"
+    print(f"work folder {args.work}; tolerance {tolerance} on "
           "max|ours - ccx| / max|ccx| per .dat block")
     print(f"{passed} passed, {len(decks) - passed} failed")
     return 0 if passed == len(decks) else 1

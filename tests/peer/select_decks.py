@@ -40,9 +40,23 @@ CONTACT_KEYWORDS admitted, and:
     *MODEL CHANGE stay unsupported keywords (one fixed set of pairs and laws);
   - the deck has at least one *CONTACT PAIR.
 
+The tie peer set (`tie=True`, run_peer.py --tie): MPC-based tied contact (*TIE). The rule
+is applied to the deck as `tie_deck()` derives it (run_peer.py runs that derived deck through
+both solvers; it is written into the work folder, never into this repository):
+  - steps with PERTURBATION are dropped with their procedure (a frequency analysis after the
+    static step: the static step is what is compared);
+  - a deck that prints nothing (*NODE PRINT / *EL PRINT) gets *NODE PRINT U of every node and
+    *EL PRINT S of every element in each step (sets PEERNALL / PEEREALL, defined before the
+    first *STEP), so its .frd-only results can be compared as .dat blocks.
+Then the same rule, with NLGEOM allowed (not required), and:
+  - *TIE admitted without CYCLIC SYMMETRY and MULTISTAGE (other analyses);
+  - *SURFACE INTERACTION, *SURFACE BEHAVIOR and *FRICTION admitted: without a *CONTACT PAIR
+    (which stays unsupported in this set) they define nothing the analysis uses;
+  - the deck has at least one *TIE.
+
 Usable as a module (`exclusion_reason`, `qualifying_decks`, `element_types`, `read_text`,
-`included_files`) and as a CLI:
-    select_decks.py [--suite DIR] [--nlgeom | --contact]
+`included_files`, `tie_deck`) and as a CLI:
+    select_decks.py [--suite DIR] [--nlgeom | --contact | --tie]
                                                excluded decks with reasons, grouped counts,
                                                then the qualifying names
     select_decks.py --list                     only the qualifying names, one per line
@@ -69,6 +83,8 @@ CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "
 CONTACT_TYPES = {"NODE TO SURFACE", "SURFACE TO SURFACE"}
 PRESSURE_OVERCLOSURES = {"LINEAR", "EXPONENTIAL", "TABULAR", "TIED", "HARD"}
 CONTACT_VARIABLES = {"CDIS", "CSTR", "CELS"}
+TIE_KEYWORDS = {"TIE", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "FRICTION"}
+TIE_REFUSED_PARAMETERS = {"CYCLIC SYMMETRY", "MULTISTAGE"}
 NODE_PRINT_VARIABLES = {"U", "RF"}
 EL_PRINT_VARIABLES = {"S", "E", "EVOL", "ENER", "ELSE", "PEEQ"}
 
@@ -116,15 +132,16 @@ def _normalise(word):
     return re.sub(r"\s+", " ", word.strip().upper())
 
 
-def records(path, _seen=None):
-    """(KEYWORD, {PARAM: value}, [data lines]) of a deck in order, *INCLUDEs expanded."""
+def records(path, _seen=None, text=None):
+    """(KEYWORD, {PARAM: value}, [data lines]) of a deck in order, *INCLUDEs expanded; `text`
+    replaces the content of `path` itself (includes are still read relative to it)."""
     _seen = set() if _seen is None else _seen
     base = path[:-3] if path.endswith(".gz") else path
     if base in _seen:
         return
     _seen.add(base)
     current = None
-    for raw in read_text(base).splitlines():
+    for raw in (read_text(base) if text is None else text).splitlines():
         line = raw.strip()
         if not line or line.startswith("**"):
             continue
@@ -153,6 +170,61 @@ def records(path, _seen=None):
 def element_types(path):
     """Sorted element TYPE= values of a deck (for reports)."""
     return sorted({p.get("TYPE", "?").upper() for k, p, _ in records(path) if k == "ELEMENT"})
+
+
+# ------------------------------------------------------------------------ derived tie decks
+
+_STEP_LINE = re.compile(r"^\s*\*\s*STEP\b", re.IGNORECASE)
+_END_STEP_LINE = re.compile(r"^\s*\*\s*END\s*STEP\b", re.IGNORECASE)
+
+
+def _id_lines(ids):
+    return [", ".join(str(i) for i in ids[k:k + 16]) for k in range(0, len(ids), 16)]
+
+
+def tie_deck(path):
+    """Text of the deck at `path` as the tie set runs it (module docstring): PERTURBATION steps
+    dropped, prints added (with_prints). Only the deck's own text changes (its *INCLUDE files
+    are used as they are)."""
+    kept, dropping = [], False
+    for line in read_text(path).splitlines():
+        if _STEP_LINE.match(line) and "PERTURBATION" in line.upper().replace(" ", ""):
+            dropping = True
+        if not dropping:
+            kept.append(line)
+        elif _END_STEP_LINE.match(line):
+            dropping = False
+    return with_prints(path, "\n".join(kept) + "\n")
+
+
+def with_prints(path, text):
+    """`text` (the deck at `path` or a form derived from it) as it is compared: a deck that
+    prints nothing to the .dat (friction1, fricloop, the tie decks: .frd output only) gets
+    prints of U at every node and S at every element at the end of each step, the same for
+    ccx and kontakt; a deck that prints keeps its own requests."""
+    lines = text.splitlines()
+    recs = list(records(path, text=text))
+    if any(k in ("NODE PRINT", "EL PRINT") for k, _, _ in recs):
+        return text
+    nodes, elements = set(), set()
+    for keyword, _, data in recs:
+        if keyword == "NODE":
+            nodes.update(int(line.split(",")[0]) for line in data)
+        elif keyword == "ELEMENT":  # a continuation line starts with a node, not a label
+            elements.update(int(line.split(",")[0]) for line, previous in zip(data, [""] + data)
+                            if not previous.rstrip().endswith(","))
+    sets = (["*NSET, NSET=PEERNALL"] + _id_lines(sorted(nodes))
+            + ["*ELSET, ELSET=PEEREALL"] + _id_lines(sorted(elements)))
+    prints = ["*NODE PRINT, NSET=PEERNALL", "U", "*EL PRINT, ELSET=PEEREALL", "S"]
+    out, sets_written = [], False
+    for line in lines:
+        if _STEP_LINE.match(line) and not sets_written:
+            out += sets
+            sets_written = True
+        if _END_STEP_LINE.match(line):
+            out += prints
+        out.append(line)
+    return "\n".join(out) + "\n"
 
 
 # ----------------------------------------------------------------------------------- the rule
@@ -188,15 +260,25 @@ def plastic_exclusion(params, data):
     return None
 
 
-def exclusion_reason(path, nlgeom=False, contact=False):
+def _tie_limit(keyword, params):
+    """The tie set's limit a *TIE breaks, or None."""
+    if keyword == "TIE":
+        refused = TIE_REFUSED_PARAMETERS.intersection(params)
+        if refused:
+            return f"*TIE, {sorted(refused)[0]}"
+    return None
+
+
+def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
     """THE qualification rule (see the module docstring): None when the deck at `path`
     qualifies, otherwise a short text naming the first check it breaks."""
     try:
-        recs = list(records(path))
-    except (OSError, UnicodeError) as e:
+        recs = list(records(path, text=tie_deck(path) if tie else None))
+    except (OSError, UnicodeError, ValueError) as e:
         return f"unreadable: {e}"
-    prints, has_nlgeom, pairs = 0, False, 0
-    keywords = SUPPORTED_KEYWORDS | (CONTACT_KEYWORDS if contact else set())
+    prints, has_nlgeom, pairs, ties = 0, False, 0, 0
+    keywords = (SUPPORTED_KEYWORDS | (CONTACT_KEYWORDS if contact else set())
+                | (TIE_KEYWORDS if tie else set()))
     for keyword, params, data in recs:
         if keyword == "ELEMENT":  # (a)
             etype = params.get("TYPE", "").upper()
@@ -212,6 +294,12 @@ def exclusion_reason(path, nlgeom=False, contact=False):
             continue
         if keyword not in keywords:  # (b)
             return f"keyword *{keyword}"
+        if tie and keyword in TIE_KEYWORDS:
+            limit = _tie_limit(keyword, params)
+            if limit:
+                return limit
+            ties += keyword == "TIE"
+            continue
         if keyword in CONTACT_KEYWORDS:
             limit = _contact_limit(keyword, params, data)
             if limit:
@@ -245,7 +333,7 @@ def exclusion_reason(path, nlgeom=False, contact=False):
         elif keyword == "STEP":
             flag = params.get("NLGEOM")
             if flag is not None and flag.upper() != "NO":
-                if not (nlgeom or contact):
+                if not (nlgeom or contact or tie):
                     return "*STEP, NLGEOM"
                 has_nlgeom = True
             if "PERTURBATION" in params:
@@ -263,14 +351,22 @@ def exclusion_reason(path, nlgeom=False, contact=False):
         return "no NLGEOM step"
     if contact and not pairs:
         return "no *CONTACT PAIR"
+    if tie and not ties:
+        return "no *TIE"
     return None
 
 
-def qualifying_decks(folder, nlgeom=False, contact=False):
+def has_nlgeom_step(path, text=None):
+    """True when a *STEP of the deck (or of `text`, standing for it) has NLGEOM (not =NO)."""
+    return any(k == "STEP" and p.get("NLGEOM", "NO").upper() != "NO"
+               for k, p, _ in records(path, text=text))
+
+
+def qualifying_decks(folder, nlgeom=False, contact=False, tie=False):
     """(qualifying names, {excluded name: reason}) over every deck in the folder."""
     good, excluded = [], {}
     for name in deck_names(folder):
-        reason = exclusion_reason(deck_path(folder, name), nlgeom, contact)
+        reason = exclusion_reason(deck_path(folder, name), nlgeom, contact, tie)
         if reason is None:
             good.append(name)
         else:
@@ -283,12 +379,13 @@ def main(argv=None):
     p.add_argument("--suite", default=DEFAULT_SUITE, help="deck folder (default: %(default)s)")
     p.add_argument("--nlgeom", action="store_true", help="the nonlinear set instead")
     p.add_argument("--contact", action="store_true", help="the frictionless contact set instead")
+    p.add_argument("--tie", action="store_true", help="the *TIE set instead")
     p.add_argument("--list", action="store_true", help="print only the qualifying names")
     a = p.parse_args(argv)
     if not os.path.isdir(a.suite):
         print(f"deck folder not found: {a.suite} (install calculix-ccx-test)", file=sys.stderr)
         return 1
-    good, excluded = qualifying_decks(a.suite, a.nlgeom, a.contact)
+    good, excluded = qualifying_decks(a.suite, a.nlgeom, a.contact, a.tie)
     if a.list:
         print("\n".join(good))
         return 0

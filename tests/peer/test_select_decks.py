@@ -4,7 +4,7 @@ import os
 import tempfile
 import unittest
 
-from select_decks import exclusion_reason, qualifying_decks
+from select_decks import exclusion_reason, qualifying_decks, records, tie_deck
 
 GOOD = """*HEADING
 a cube
@@ -144,6 +144,55 @@ S1, S2
                 self.assertIn(old, contact)
                 self.assertEqual(exclusion_reason(self.deck(contact.replace(old, new, 1)),
                                                   contact=True), reason)
+
+    def test_tie_set(self):
+        tie = GOOD.replace("*STEP\n", """*SURFACE, NAME=S1
+EALL, S1
+*SURFACE, NAME=S2
+EALL, S2
+*TIE, NAME=T1, POSITION TOLERANCE=0.01
+S1, S2
+*SURFACE INTERACTION, NAME=UNUSED
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED
+1e7
+*FRICTION
+1e30, 1e7
+*STEP, NLGEOM
+""", 1)
+        self.assertEqual(exclusion_reason(self.deck(tie)), "keyword *TIE")
+        self.assertIsNone(exclusion_reason(self.deck(tie), tie=True))
+        self.assertEqual(exclusion_reason(self.deck(GOOD), tie=True), "no *TIE")
+        cases = {
+            ("NAME=T1,", "NAME=T1, CYCLIC SYMMETRY,"): "*TIE, CYCLIC SYMMETRY",
+            ("NAME=T1,", "NAME=T1, MULTISTAGE,"): "*TIE, MULTISTAGE",
+            ("*SURFACE INTERACTION", "*CONTACT PAIR, INTERACTION=UNUSED, TYPE=SURFACE TO "
+             "SURFACE\nS1, S2\n*SURFACE INTERACTION"): "keyword *CONTACT PAIR",
+        }
+        for (old, new), reason in cases.items():
+            with self.subTest(reason=reason):
+                self.assertIn(old, tie)
+                self.assertEqual(exclusion_reason(self.deck(tie.replace(old, new, 1)), tie=True),
+                                 reason)
+
+    def test_tie_deck_drops_perturbation_steps_and_adds_prints(self):
+        silent = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")
+        silent = silent.replace("*ELEMENT, TYPE=C3D8, ELSET=EALL\n1, 1, 2, 3, 4, 5, 6, 7, 8\n",
+                                "*ELEMENT, TYPE=C3D20, ELSET=EALL\n1, 1, 2, 3, 4, 5, 6, 7, 8, 9, "
+                                "10, 11, 12, 13, 14, 15, 16,\n17, 18, 19, 20\n2, 1, 2, 3, 4, 5, "
+                                "6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,\n17, 18, 19, 20\n")
+        silent += "*STEP, PERTURBATION\n*FREQUENCY\n10\n*END STEP\n"
+        derived = tie_deck(self.deck(silent))
+        self.assertNotIn("PERTURBATION", derived)
+        self.assertNotIn("*FREQUENCY\n10", derived)
+        recs = list(records(self.deck(derived, "derived")))
+        sets = {p.get("NSET", p.get("ELSET")): data for k, p, data in recs if k in ("NSET", "ELSET")}
+        self.assertEqual(sets["PEERNALL"], ["1"])
+        self.assertEqual(sets["PEEREALL"], ["1, 2"])  # continuation lines are not labels
+        keywords = [k for k, _, _ in recs]
+        step = keywords.index("STEP")
+        self.assertLess(keywords.index("NSET"), step)  # sets before the first step
+        self.assertEqual(keywords[-3:], ["NODE PRINT", "EL PRINT", "END STEP"])
+        self.assertEqual(tie_deck(self.deck(GOOD)), GOOD)  # printing decks keep their prints
 
 
 if __name__ == "__main__":

@@ -1,11 +1,13 @@
 // app::run_job and app::check_deck, the entry point `kontakt solve` and the daemon share.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
 
 #include "../analysis/cube_deck.hpp"
+#include "../contact/two_blocks.hpp"
 #include "../inp/deck_fixtures.hpp"
 #include "app/run_job.hpp"
 
@@ -159,6 +161,29 @@ TEST_F(RunJobTest, UnwritableOutputIsAnError) {
   const RunOutcome r = run_job(req, sink, no_cancel);
   EXPECT_EQ(r.status, RunStatus::Error);
   EXPECT_EQ(r.exit_code, 4);
+}
+
+TEST_F(RunJobTest, TiesAreSetUpBeforeALinearSolveAndTheirWarningsReported) {
+  // The upper block hangs over the lower one: its slave nodes beyond x = 1 stay free.
+  contact::fixtures::TwoBlocks t;
+  t.offset_x = 0.75;
+  std::string text = contact::fixtures::two_blocks_deck(t);
+  text.insert(text.find("*STEP"), "*TIE, NAME=BOND\nSLAVE, MASTER\n");
+  const fs::path deck = write("tie.inp", text);
+  Recorder sink;
+  const RunOutcome r = run_job(request(deck), sink, no_cancel);
+  ASSERT_EQ(r.status, RunStatus::Converged) << r.message;
+  const auto free_nodes = [](const std::string& w) {
+    return w.find("tie BOND: 6 slave node(s) of SLAVE have no master face") != std::string::npos;
+  };
+  EXPECT_TRUE(std::any_of(sink.events.begin(), sink.events.end(), [&](const analysis::Event& e) {
+    return e.kind == analysis::Event::Kind::Warning && free_nodes(e.message);
+  }));
+  EXPECT_TRUE(std::none_of(sink.events.begin(), sink.events.end(), [](const analysis::Event& e) {
+    return e.kind == analysis::Event::Kind::Iteration;  // linear: no Newton iterations
+  }));
+  const DeckCheck check = check_deck(deck, std::nullopt);
+  EXPECT_TRUE(std::any_of(check.warnings.begin(), check.warnings.end(), free_nodes));
 }
 
 }  // namespace kontakt::app

@@ -17,4 +17,7 @@ struct BadDeck {
 /// The contact keywords' cases (test_contact_errors.cpp).
 std::vector<BadDeck> contact_bad_decks();
 
+/// The *TIE cases (test_tie.cpp).
+std::vector<BadDeck> tie_bad_decks();
+
 }  // namespace kontakt::inp::test

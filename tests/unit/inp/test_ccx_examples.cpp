@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "inp/read_deck.hpp"
 
@@ -54,7 +55,7 @@ bool supported_card(const std::string& keyword, const std::string& card) {
       "BOUNDARY", "STEP", "STATIC", "ENDSTEP", "CLOAD", "DLOAD", "TEMPERATURE", "NODEPRINT",
       "ELPRINT", "NODEFILE", "NODEOUTPUT", "ELFILE", "ELEMENTOUTPUT", "OUTPUT", "FILEFORMAT",
       "PLASTIC", "CONTROLS", "SURFACEINTERACTION", "SURFACEBEHAVIOR", "FRICTION",
-      "CHANGEFRICTION", "CONTACTPAIR", "CONTACTPRINT", "CONTACTFILE", "CONTACTOUTPUT"};
+      "CHANGEFRICTION", "CONTACTPAIR", "CONTACTPRINT", "CONTACTFILE", "CONTACTOUTPUT", "TIE"};
   static const std::set<std::string> types = {"C3D4",  "C3D6",  "C3D8",  "C3D8R", "C3D8I",
                                               "C3D10", "C3D15", "C3D20", "C3D20R"};
   if (!keywords.contains(keyword)) return false;
@@ -71,6 +72,10 @@ bool supported_card(const std::string& keyword, const std::string& card) {
   if (keyword == "CONTACTPAIR" && card.find("TYPE=NODETOSURFACE") == std::string::npos &&
       card.find("TYPE=SURFACETOSURFACE") == std::string::npos) {
     return false;  // mortar and massless contact
+  }
+  if (keyword == "TIE" && (card.find(",CYCLICSYMMETRY") != std::string::npos ||
+                           card.find(",MULTISTAGE") != std::string::npos)) {
+    return false;  // ties of other analyses
   }
   if (keyword == "PLASTIC" && card.find("HARDENING=") != std::string::npos &&
       card.find("HARDENING=ISOTROPIC") == std::string::npos) {
@@ -214,6 +219,28 @@ TEST(inpCcxExamples, ContactDecksParse) {
   EXPECT_DOUBLE_EQ(steps[3].interaction_friction[0]->mu, 0.1);
   EXPECT_DOUBLE_EQ(steps[3].interaction_friction[0]->stick_slope, 80.);
   EXPECT_EQ(steps[3].contact_prints[0].frequency, 100);
+}
+
+/// The suite's *TIE decks (tied contact, not cyclic symmetry) parse into their ties.
+TEST(inpCcxExamples, TieDecksParse) {
+  if (!fs::is_directory(kExamples)) GTEST_SKIP() << kExamples << " not installed";
+  using Kind = model::Surface::Kind;
+  const std::vector<std::tuple<std::string, std::string, std::string, Kind>> decks = {
+      {"cubef2f3", "SLAVE", "MASTER", Kind::ElementFaces},
+      {"beamptied1", "NDEP", "INDF", Kind::Nodes},
+      {"beamptied2", "DEPF", "INDF", Kind::ElementFaces}};
+  for (const auto& [name, slave, master, kind] : decks) {
+    const model::Model m = read_deck_text(read_text(example(name)), name + ".inp");
+    ASSERT_EQ(m.ties.size(), 1u) << name;
+    const model::Tie& tie = m.ties[0];
+    EXPECT_EQ(tie.name, "T1") << name;
+    EXPECT_EQ(tie.slave, slave) << name;
+    EXPECT_EQ(tie.master, master) << name;
+    EXPECT_FALSE(tie.position_tolerance.has_value()) << name;
+    EXPECT_TRUE(tie.adjust) << name;
+    EXPECT_EQ(m.surfaces.at(slave).kind, kind) << name;
+    EXPECT_TRUE(m.contact_pairs.empty()) << name;  // cubef2f3's TIED interaction is unused
+  }
 }
 
 }  // namespace

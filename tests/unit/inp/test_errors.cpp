@@ -15,7 +15,7 @@ std::string model_plus(const std::string& tail) { return test::two_cubes_model()
 std::vector<BadDeck> bad_decks() {
   const std::string step = "*STEP\n*STATIC\n";
   return {
-      {"unsupported keyword", model_plus("*TIE, NAME=T\nA, B\n"), 27, "*TIE",
+      {"unsupported keyword", model_plus("*MPC\nBEAM, 1, 2\n"), 27, "*MPC",
        "keyword not supported"},
       {"hyperelastic unsupported",
        model_plus("*MATERIAL, NAME=P\n*ELASTIC\n1,0\n*HYPERELASTIC\n1,0\n"), 30,
@@ -128,6 +128,8 @@ std::string case_name(const ::testing::TestParamInfo<BadDeck>& info) {
 INSTANTIATE_TEST_SUITE_P(Malformed, inpErrors, ::testing::ValuesIn(bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedContact, inpErrors,
                          ::testing::ValuesIn(test::contact_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_bad_decks()),
+                         case_name);
 
 }  // namespace
 }  // namespace kontakt::inp

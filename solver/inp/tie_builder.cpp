@@ -1,0 +1,37 @@
+#include "inp/tie_builder.hpp"
+
+namespace kontakt::inp {
+
+namespace {
+
+const model::Surface& tie_surface(const DeckState& state, const model::Tie& tie,
+                                  const std::string& name, const std::string& role) {
+  const auto found = state.model.surfaces.find(name);
+  if (found == state.model.surfaces.end())
+    throw InputError(tie.where, "*TIE",
+                     "tie " + tie.name + ": " + role + " surface " + name + " is not defined");
+  if (found->second.faces.empty() && found->second.nodes.empty())
+    throw InputError(tie.where, "*TIE",
+                     "tie " + tie.name + ": " + role + " surface " + name + " is empty");
+  return found->second;
+}
+
+}  // namespace
+
+void resolve_ties(const DeckState& state) {
+  for (const model::Tie& tie : state.model.ties) {
+    tie_surface(state, tie, tie.slave, "slave");
+    const model::Surface& master = tie_surface(state, tie, tie.master, "master");
+    if (master.kind != model::Surface::Kind::ElementFaces)
+      throw InputError(tie.where, "*TIE",
+                       "tie " + tie.name + ": master surface " + tie.master +
+                           " must be made of element faces (a node surface has no faces to "
+                           "tie to)");
+    if (tie.slave == tie.master)
+      throw InputError(tie.where, "*TIE",
+                       "tie " + tie.name + ": surface " + tie.slave +
+                           " is both slave and master");
+  }
+}
+
+}  // namespace kontakt::inp
