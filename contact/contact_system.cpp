@@ -55,7 +55,11 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
       throw InputError(def.where, "*CONTACT PAIR",
                        "master surface " + def.master + " has no element faces");
     const bool nts = pair.scheme.kind == Kind::NodeToSurface;
-    if (nts && pair.law.kind == PressureLaw::Kind::Tied)
+    bool tied = pair.behavior.law == model::SurfaceBehavior::Law::Tied;
+    for (const model::Step& step : model.steps)
+      tied |= static_cast<std::size_t>(def.interaction) < step.interaction_behavior.size() &&
+              step.interaction_behavior[def.interaction].law == model::SurfaceBehavior::Law::Tied;
+    if (nts && tied)
       throw InputError(def.where, "*CONTACT PAIR",
                        "PRESSURE-OVERCLOSURE=TIED is face-to-face contact: use TYPE=SURFACE TO "
                        "SURFACE (or a segment scheme) for this pair");
@@ -86,6 +90,11 @@ void ContactSystem::begin_step(const model::Step& step) {
   frictional_ = false;
   for (Pair& pair : pairs_) {
     const auto index = static_cast<std::size_t>(pair.def->interaction);
+    if (index < step.interaction_behavior.size()) {  // *CHANGE SURFACE BEHAVIOR
+      pair.behavior = step.interaction_behavior[index];
+      pair.law = make_pressure_law(pair.behavior, pair.scheme.linear);
+      pair.penalty = reference_stiffness(pair.law);
+    }
     const std::optional<model::Friction>& f =
         index < step.interaction_friction.size() ? step.interaction_friction[index] : std::nullopt;
     pair.friction.reset();

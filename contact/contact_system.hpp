@@ -94,8 +94,9 @@ class ContactSystem {
   bool wants_line_search(int iteration) const;
 
   // --- Lifecycle --------------------------------------------------------------------------
-  /// The friction in force from this step on (*FRICTION as *CHANGE FRICTION left it; TIED
-  /// pairs stick with the card's slope); the slip history is kept.
+  /// The surface behavior and friction in force from this step on (as *CHANGE SURFACE
+  /// BEHAVIOR and *CHANGE FRICTION left them; TIED pairs stick with the *FRICTION card's
+  /// slope); the slip history is kept.
   void begin_step(const model::Step& step);
   /// Rebuilds the points at the converged displacements `u`; their friction state is moved
   /// over from the committed state of the old ones (node-to-surface: per slave node; else per

@@ -35,11 +35,10 @@ std::string default_origin(const DeckState& state) {
 }
 
 /// ccx's *SURFACE BEHAVIOR defaults: c0 <= 0 -> 1e-3; LINEAR/TIED K <= 0 -> 50 E; LINEAR
-/// sigma_inf <= 0 -> E / 70000; TIED has no default K. The warning names the defaults that matter: sigma_inf only
-/// acts in node-to-surface contact.
-void resolve_behavior(DeckState& state, std::size_t index, bool tension_matters) {
-  model::SurfaceBehavior& b = state.model.interactions[index].behavior;
-  const SourceLoc& where = state.raw_interactions[index].behavior_where;
+/// sigma_inf <= 0 -> E / 70000; TIED has no default K. The warning names the defaults that
+/// matter: sigma_inf only acts in node-to-surface contact.
+void resolve_behavior(DeckState& state, const SourceLoc& where, model::SurfaceBehavior& b,
+                      bool tension_matters) {
   if (b.clearance_c0 <= 0) b.clearance_c0 = 1e-3;
   if (b.law != Law::Linear && b.law != Law::Tied) return;
   const bool default_k = b.stiffness <= 0;
@@ -66,11 +65,19 @@ void resolve_behavior(DeckState& state, std::size_t index, bool tension_matters)
                "defaults used: " + used + " (" + default_origin(state) + ")");
 }
 
+/// Interactions used by node-to-surface pairs (where a LINEAR law's tension tail acts).
+std::set<std::string> node_to_surface_interactions(const DeckState& state) {
+  std::set<std::string> names;
+  for (const RawContactPair& raw : state.contact_pairs)
+    if (raw.pair.type == PairType::NodeToSurface) names.insert(raw.interaction);
+  return names;
+}
+
 void resolve_interaction(DeckState& state, std::size_t index, bool tension_matters) {
   model::SurfaceInteraction& interaction = state.model.interactions[index];
   const RawInteraction& raw = state.raw_interactions[index];
   if (!raw.has_behavior) return;  // an error only when a contact pair uses it
-  resolve_behavior(state, index, tension_matters);
+  resolve_behavior(state, raw.behavior_where, interaction.behavior, tension_matters);
   if (interaction.friction) resolve_stick_slope(state, raw.friction_where, *interaction.friction);
   if (interaction.behavior.law == Law::Tied && !interaction.friction)
     throw InputError(raw.behavior_where, "*SURFACE BEHAVIOR",
@@ -130,16 +137,30 @@ model::ContactPair resolve_pair(const DeckState& state, const RawContactPair& ra
   return pair;
 }
 
-void set_step_frictions(DeckState& state) {
+/// Step::interaction_friction and interaction_behavior: the model's, as changed so far. A
+/// TIED behavior needs a *FRICTION in every step it is in force (its stick slope).
+void set_step_interactions(DeckState& state) {
   auto& steps = state.model.steps;
+  const auto& interactions = state.model.interactions;
   for (std::size_t s = 0; s < steps.size(); ++s) {
-    const auto& changes = state.step_friction_changes[s];
+    const auto& friction_changes = state.step_friction_changes[s];
+    const auto& behavior_changes = state.step_behavior_changes[s];
     auto& friction = steps[s].interaction_friction;
+    auto& behavior = steps[s].interaction_behavior;
     friction.clear();
-    for (std::size_t i = 0; i < state.model.interactions.size(); ++i) {
-      const auto changed = changes.find(static_cast<int>(i));
-      friction.push_back(changed != changes.end() ? std::optional(changed->second)
-                                                  : state.model.interactions[i].friction);
+    behavior.clear();
+    for (std::size_t i = 0; i < interactions.size(); ++i) {
+      const int index = static_cast<int>(i);
+      const auto f = friction_changes.find(index);
+      friction.push_back(f != friction_changes.end() ? std::optional(f->second)
+                                                     : interactions[i].friction);
+      const auto b = behavior_changes.find(index);
+      behavior.push_back(b != behavior_changes.end() ? b->second : interactions[i].behavior);
+      if (b != behavior_changes.end() && b->second.law == Law::Tied && !friction.back())
+        throw InputError(state.behavior_change_where.at(index), "*SURFACE BEHAVIOR",
+                         "PRESSURE-OVERCLOSURE=TIED needs a *FRICTION card in interaction " +
+                             interactions[i].name + " (its stick slope is the tangential "
+                             "stiffness); step " + std::to_string(s + 1) + " has none");
     }
   }
 }
@@ -156,14 +177,18 @@ void resolve_stick_slope(DeckState& state, const SourceLoc& where, model::Fricti
 }
 
 void resolve_contact(DeckState& state) {
-  std::set<std::string> node_to_surface;  // interactions of node-to-surface pairs
-  for (const RawContactPair& raw : state.contact_pairs)
-    if (raw.pair.type == PairType::NodeToSurface) node_to_surface.insert(raw.interaction);
+  const std::set<std::string> node_to_surface = node_to_surface_interactions(state);
   for (std::size_t i = 0; i < state.model.interactions.size(); ++i)
     resolve_interaction(state, i, node_to_surface.contains(state.model.interactions[i].name));
   for (const RawContactPair& raw : state.contact_pairs)
     state.model.contact_pairs.push_back(resolve_pair(state, raw));
-  set_step_frictions(state);
+  set_step_interactions(state);
+}
+
+void resolve_changed_behavior(DeckState& state, const SourceLoc& where, int interaction,
+                              model::SurfaceBehavior& behavior) {
+  const std::string& name = state.model.interactions.at(static_cast<std::size_t>(interaction)).name;
+  resolve_behavior(state, where, behavior, node_to_surface_interactions(state).contains(name));
 }
 
 }  // namespace kontakt::inp

@@ -11,8 +11,13 @@ namespace kontakt::inp {
 /// material in the deck), with a warning at `where`. Throws InputError when there is no E.
 void resolve_stick_slope(DeckState& state, const SourceLoc& where, model::Friction& friction);
 
+/// Fills in ccx's defaults of a *SURFACE BEHAVIOR given in a step (after *CHANGE SURFACE
+/// BEHAVIOR) for `interaction`; the contact pairs are all known by then.
+void resolve_changed_behavior(DeckState& state, const SourceLoc& where, int interaction,
+                              model::SurfaceBehavior& behavior);
+
 /// Fills in the defaults of every interaction, resolves the contact pairs into
-/// Model::contact_pairs and sets Step::interaction_friction. Needs the surfaces and node sets
+/// Model::contact_pairs and sets Step::interaction_friction and interaction_behavior. Needs the surfaces and node sets
 /// of the model already built. Throws InputError naming the card of the first problem.
 void resolve_contact(DeckState& state);
 

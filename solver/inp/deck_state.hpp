@@ -83,6 +83,9 @@ struct ActiveLoads {
   model::ContactControls contact_controls;  ///< likewise
   /// *CHANGE FRICTION: interaction index -> the friction that replaces the model's one.
   std::map<int, model::Friction> friction_changes;
+  /// *CHANGE SURFACE BEHAVIOR: interaction index -> the behavior that replaces the model's one
+  /// (defaults resolved at its card).
+  std::map<int, model::SurfaceBehavior> behavior_changes;
 };
 
 /// Which keywords already appeared in the open step: OP= acts on the first card only, and the
@@ -112,11 +115,16 @@ struct DeckState {
   /// Per finished step: ActiveLoads::friction_changes at its end (combined with the model's
   /// frictions once those are resolved, into Step::interaction_friction).
   std::vector<std::map<int, model::Friction>> step_friction_changes;
+  /// Per finished step: ActiveLoads::behavior_changes at its end, with the card of each.
+  std::vector<std::map<int, model::SurfaceBehavior>> step_behavior_changes;
+  /// The *SURFACE BEHAVIOR card of each change (interaction index -> card), for messages.
+  std::map<int, SourceLoc> behavior_change_where;
   std::map<int, Real> initial_temperatures;  ///< internal node -> value
   int current_material = -1;                 ///< target of *ELASTIC, *DENSITY, ...
   /// Target of *SURFACE BEHAVIOR and *FRICTION: the open *SURFACE INTERACTION block or, in a
-  /// step, the interaction named by *CHANGE FRICTION.
+  /// step, the interaction named by *CHANGE FRICTION or *CHANGE SURFACE BEHAVIOR.
   int current_interaction = -1;
+  std::string open_change;  ///< in a step: which of the two *CHANGE cards names it
   std::optional<StepProgress> open_step;
   bool any_step_seen = false;
   ActiveLoads active;

@@ -27,6 +27,7 @@ void handle_surface_interaction(const Record&, DeckState&);
 void handle_surface_behavior(const Record&, DeckState&);
 void handle_friction(const Record&, DeckState&);
 void handle_change_friction(const Record&, DeckState&);
+void handle_change_surface_behavior(const Record&, DeckState&);
 void handle_contact_pair(const Record&, DeckState&);
 
 // kw_tie.cpp

@@ -30,7 +30,7 @@ constexpr std::array<KeywordSpec, 41> kKeywords{{
     {"EXPANSION", M, Mat, handle_expansion},
     {"SOLIDSECTION", M, None, handle_solid_section},
     {"SURFACEINTERACTION", M, Inter, handle_surface_interaction},
-    {"SURFACEBEHAVIOR", M, Inter, handle_surface_behavior},
+    {"SURFACEBEHAVIOR", A, Inter, handle_surface_behavior},  // in a step: after *CHANGE ...
     {"FRICTION", A, Inter, handle_friction},  // in a step: after *CHANGE FRICTION
     {"CONTACTPAIR", M, None, handle_contact_pair},
     {"TIE", M, None, handle_tie},
@@ -42,6 +42,7 @@ constexpr std::array<KeywordSpec, 41> kKeywords{{
     {"STATIC", S, None, handle_static},
     {"CONTROLS", S, None, handle_controls},
     {"CHANGEFRICTION", S, Inter, handle_change_friction},
+    {"CHANGESURFACEBEHAVIOR", S, Inter, handle_change_surface_behavior},
     {"ENDSTEP", S, None, handle_end_step},
     {"CLOAD", S, None, handle_cload},
     {"DLOAD", S, None, handle_dload},

@@ -1,4 +1,5 @@
-// *SURFACE INTERACTION with its *SURFACE BEHAVIOR and *FRICTION, *CHANGE FRICTION, and
+// *SURFACE INTERACTION with its *SURFACE BEHAVIOR and *FRICTION, *CHANGE FRICTION, *CHANGE
+// SURFACE BEHAVIOR and
 // *CONTACT PAIR (ccx-behaviour.md section 1.1). Values are stored as written; the defaults ccx
 // derives from the first material, and every name, are resolved at the end of the deck
 // (contact_builder.cpp), because ccx allows the pair and the interaction in either order.
@@ -12,11 +13,28 @@ namespace {
 
 using Law = model::SurfaceBehavior::Law;
 
-/// The interaction a *SURFACE BEHAVIOR or *FRICTION card belongs to.
-int current_interaction(const Record& record, const DeckState& state) {
-  if (state.current_interaction >= 0) return state.current_interaction;
-  fail(record, state.open_step ? "must follow a *CHANGE FRICTION card"
-                               : "must follow a *SURFACE INTERACTION card");
+/// The interaction a *SURFACE BEHAVIOR or *FRICTION card belongs to; in a step, the one the
+/// `change` card (*CHANGE FRICTION or *CHANGE SURFACE BEHAVIOR) just named.
+int current_interaction(const Record& record, const DeckState& state, const std::string& change) {
+  if (!state.open_step) {
+    if (state.current_interaction >= 0) return state.current_interaction;
+    fail(record, "must follow a *SURFACE INTERACTION card");
+  }
+  if (state.current_interaction >= 0 && state.open_change == change)
+    return state.current_interaction;
+  fail(record, "in a step it must follow a " + change + " card");
+}
+
+/// The interaction *CHANGE FRICTION or *CHANGE SURFACE BEHAVIOR names.
+void open_change(const Record& record, DeckState& state, const std::string& change) {
+  check_params(record, {"INTERACTION"});
+  if (!record.lines.empty()) fail(record, record.lines.front(), "unexpected data line");
+  const std::string name = remove_blanks(to_upper(required_value(record, "INTERACTION")));
+  const auto found = state.interaction_index.find(name);
+  if (found == state.interaction_index.end())
+    fail(record, "surface interaction " + name + " is not defined");
+  state.current_interaction = found->second;
+  state.open_change = change;
 }
 
 /// LINEAR, HARD and TIED: "K, sigma_inf, c0"; blank, zero or negative values take ccx's
@@ -146,7 +164,7 @@ void handle_surface_interaction(const Record& record, DeckState& state) {
 
 void handle_surface_behavior(const Record& record, DeckState& state) {
   check_params(record, {"PRESSURE-OVERCLOSURE"});
-  const int index = current_interaction(record, state);
+  const int index = current_interaction(record, state, "*CHANGE SURFACE BEHAVIOR");
   const std::optional<std::string> law = name_value(record, "PRESSURE-OVERCLOSURE");
   if (!law)
     fail(record, "PRESSURE-OVERCLOSURE= is required (LINEAR, EXPONENTIAL, TABULAR, TIED or HARD)");
@@ -170,6 +188,12 @@ void handle_surface_behavior(const Record& record, DeckState& state) {
     fail(record, "PRESSURE-OVERCLOSURE=" + *law +
                      ": expected LINEAR, EXPONENTIAL, TABULAR, TIED or HARD");
   }
+  if (state.open_step) {
+    resolve_changed_behavior(state, record.where, index, behavior);
+    state.active.behavior_changes[index] = std::move(behavior);
+    state.behavior_change_where[index] = record.where;
+    return;
+  }
   // ccx: a property defined twice in one interaction block takes the last definition.
   RawInteraction& raw = state.raw_interactions[static_cast<std::size_t>(index)];
   model::SurfaceInteraction& interaction =
@@ -184,7 +208,7 @@ void handle_surface_behavior(const Record& record, DeckState& state) {
 
 void handle_friction(const Record& record, DeckState& state) {
   check_params(record, {});
-  const int index = current_interaction(record, state);
+  const int index = current_interaction(record, state, "*CHANGE FRICTION");
   require_line_count(record, 1, 100000);
   // ccx: no temperature dependence, the last data line counts.
   if (record.lines.size() > 1)
@@ -208,13 +232,11 @@ void handle_friction(const Record& record, DeckState& state) {
 }
 
 void handle_change_friction(const Record& record, DeckState& state) {
-  check_params(record, {"INTERACTION"});
-  if (!record.lines.empty()) fail(record, record.lines.front(), "unexpected data line");
-  const std::string name = remove_blanks(to_upper(required_value(record, "INTERACTION")));
-  const auto found = state.interaction_index.find(name);
-  if (found == state.interaction_index.end())
-    fail(record, "surface interaction " + name + " is not defined");
-  state.current_interaction = found->second;
+  open_change(record, state, "*CHANGE FRICTION");
+}
+
+void handle_change_surface_behavior(const Record& record, DeckState& state) {
+  open_change(record, state, "*CHANGE SURFACE BEHAVIOR");
 }
 
 void handle_contact_pair(const Record& record, DeckState& state) {

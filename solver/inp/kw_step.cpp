@@ -115,6 +115,7 @@ void handle_end_step(const Record& record, DeckState& state) {
   step.element_files = with_frequency(active.element_files, active.output_frequency);
   step.contact_files = with_frequency(active.contact_files, active.output_frequency);
   state.step_friction_changes.push_back(active.friction_changes);
+  state.step_behavior_changes.push_back(active.behavior_changes);
   active.nlgeom = step.nlgeom;
 
   const auto& amplitudes = state.model.amplitudes;

@@ -170,6 +170,9 @@ struct Step {
   /// Per interaction (Model::interactions order): the friction in force in this step, i.e. the
   /// interaction's *FRICTION as changed by *CHANGE FRICTION in this or an earlier step.
   std::vector<std::optional<Friction>> interaction_friction;
+  /// Per interaction: the *SURFACE BEHAVIOR in force in this step (the interaction's own, as
+  /// changed by *CHANGE SURFACE BEHAVIOR in this or an earlier step).
+  std::vector<SurfaceBehavior> interaction_behavior;
 };
 
 struct Model {

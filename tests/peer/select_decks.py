@@ -29,15 +29,15 @@ column, or the same temperature on every line). The linear set keeps *PLASTIC ou
 switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
 whatever its *STEP says.
 
-The contact peer set (`contact=True`, run_peer.py --contact): frictionless penalty contact.
+The contact peer set (`contact=True`, run_peer.py --contact): penalty contact with friction.
 The same rule, with NLGEOM allowed (not required; C3D8I excluded), the keywords of
 CONTACT_KEYWORDS admitted, and:
   - *CONTACT PAIR: TYPE= NODE TO SURFACE or SURFACE TO SURFACE (not MORTAR and its kin);
   - *SURFACE BEHAVIOR: PRESSURE-OVERCLOSURE= LINEAR, EXPONENTIAL, TABULAR, TIED or HARD;
   - *CONTACT PRINT / FILE / OUTPUT: variables from CONTACT_VARIABLES (CDIS, CSTR, CELS) only,
     by their first four characters as ccx reads them (CDISP, CSTRESS);
-  - *FRICTION and *CHANGE FRICTION admitted (Coulomb friction); *CHANGE SURFACE BEHAVIOR and
-    *MODEL CHANGE stay unsupported keywords (one fixed set of pairs and laws);
+  - *FRICTION, *CHANGE FRICTION and *CHANGE SURFACE BEHAVIOR admitted; *MODEL CHANGE stays
+    an unsupported keyword (one fixed set of pairs);
   - the deck has at least one *CONTACT PAIR.
 
 The tie peer set (`tie=True`, run_peer.py --tie): MPC-based tied contact (*TIE). The rule
@@ -79,7 +79,8 @@ SUPPORTED_KEYWORDS = {
 }
 FORBIDDEN_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
 CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
-                    "CONTACT FILE", "CONTACT OUTPUT", "FRICTION", "CHANGE FRICTION"}
+                    "CONTACT FILE", "CONTACT OUTPUT", "FRICTION", "CHANGE FRICTION",
+                    "CHANGE SURFACE BEHAVIOR"}
 CONTACT_TYPES = {"NODE TO SURFACE", "SURFACE TO SURFACE"}
 PRESSURE_OVERCLOSURES = {"LINEAR", "EXPONENTIAL", "TABULAR", "TIED", "HARD"}
 CONTACT_VARIABLES = {"CDIS", "CSTR", "CELS"}

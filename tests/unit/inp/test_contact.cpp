@@ -240,6 +240,26 @@ TEST(inpContact, ChangeFrictionActsFromItsStepOn) {
   EXPECT_DOUBLE_EQ(m.interactions[0].friction->mu, 0.2);  // the model's own is kept
 }
 
+TEST(inpContact, ChangeSurfaceBehaviorActsFromItsStepOn) {
+  // changesurfbeh's pattern: TIED in step 1, LINEAR (here with ccx's default K) from step 2 on.
+  const Model m = read("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, "
+                       "PRESSURE-OVERCLOSURE=TIED\n1e9\n*FRICTION\n1e-4, 1e3\n" + kStep +
+                       "*STEP\n*STATIC\n*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n"
+                       "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n*END STEP\n" + kStep);
+  ASSERT_EQ(m.steps.size(), 3u);
+  using Law = model::SurfaceBehavior::Law;
+  EXPECT_EQ(m.steps[0].interaction_behavior.at(0).law, Law::Tied);
+  EXPECT_DOUBLE_EQ(m.steps[0].interaction_behavior[0].stiffness, 1e9);
+  for (int s : {1, 2}) {
+    const auto& b = m.steps[static_cast<std::size_t>(s)].interaction_behavior.at(0);
+    EXPECT_EQ(b.law, Law::Linear) << s;
+    EXPECT_DOUBLE_EQ(b.stiffness, 50 * 210000.) << s;  // default K = 50 E, resolved at the card
+    EXPECT_DOUBLE_EQ(b.clearance_c0, 1e-3) << s;
+  }
+  EXPECT_EQ(m.interactions[0].behavior.law, Law::Tied);  // the model's own is kept
+  EXPECT_TRUE(has_warning(m, "defaults used: K = 50 E"));
+}
+
 TEST(inpContact, ElementPrintBeforeNodePrintKeepsCcxsOrder) {
   const Model m = read_deck_text(test::two_cubes_model() +
                                  "*STEP\n*STATIC\n*EL PRINT, ELSET=EALL\nS\n*NODE PRINT, "

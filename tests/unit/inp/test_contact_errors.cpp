@@ -125,6 +125,31 @@ std::vector<BadDeck> contact_bad_decks() {
        "*CHANGE FRICTION", "surface interaction X is not defined"},
       {"change friction in the model", surfaces_plus("*CHANGE FRICTION, INTERACTION=SI\n"), 33,
        "*CHANGE FRICTION", "only allowed between *STEP and *END STEP"},
+      // *CHANGE SURFACE BEHAVIOR
+      {"behavior in a step without change",
+       surfaces_plus(si + step + "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e7\n*END STEP\n"),
+       38, "*SURFACE BEHAVIOR", "must follow a *CHANGE SURFACE BEHAVIOR"},
+      {"behavior after a friction change",
+       surfaces_plus(si + step + "*CHANGE FRICTION, INTERACTION=SI\n*SURFACE BEHAVIOR, "
+                     "PRESSURE-OVERCLOSURE=LINEAR\n1e7\n*END STEP\n"),
+       39, "*SURFACE BEHAVIOR", "must follow a *CHANGE SURFACE BEHAVIOR"},
+      {"friction after a behavior change",
+       surfaces_plus(si + step + "*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n*FRICTION\n0.2\n*END STEP\n"),
+       39, "*FRICTION", "must follow a *CHANGE FRICTION"},
+      {"changed to tied without friction",
+       surfaces_plus(si + step + "*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n*SURFACE BEHAVIOR, "
+                     "PRESSURE-OVERCLOSURE=TIED\n1e7\n*END STEP\n"),
+       39, "*SURFACE BEHAVIOR", "needs a *FRICTION card in interaction SI"},
+      {"changed to tied without stiffness",
+       surfaces_plus(si + "*FRICTION\n0.2\n" + step + "*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n"
+                     "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n*END STEP\n"),
+       41, "*SURFACE BEHAVIOR", "needs its stiffness K"},
+      {"change of an unknown interaction's behavior",
+       surfaces_plus(si + step + "*CHANGE SURFACE BEHAVIOR, INTERACTION=X\n*END STEP\n"), 38,
+       "*CHANGE SURFACE BEHAVIOR", "surface interaction X is not defined"},
+      {"change surface behavior in the model",
+       surfaces_plus("*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n"), 33,
+       "*CHANGE SURFACE BEHAVIOR", "only allowed between *STEP and *END STEP"},
       // *CONTACT PRINT, *CONTACT FILE
       {"unknown contact print variable",
        surfaces_plus(step + "*CONTACT PRINT\nCDIS, CPRESS\n*END STEP\n"), 36, "*CONTACT PRINT",
