@@ -86,6 +86,7 @@ class Lexer {
       const SourceLoc where{file, line_number};
       if (line.front() == '*') {
         Record record = parse_keyword_line(line, where);
+        if (record.key.empty()) throw InputError(where, "*", "no keyword after '*'");
         if (record.key == "INCLUDE") {
           include(record, dir, depth);
         } else {
