@@ -36,6 +36,7 @@ VecX multiply_symmetric(const assembly::SparsePattern& pattern, const std::vecto
 void SpdSolve::factorise(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
                          SpdSolveReport& report) {
   stabilised_ = indefinite_ = false;
+  if (pattern.n == 0) return;  // every dof prescribed: no equation left, nothing to factor
   try {
     solver_.factorize(values);
     return;
@@ -107,6 +108,7 @@ VecX SpdSolve::solve(const assembly::SparsePattern& pattern, const std::vector<R
                      const VecX& b, SpdSolveReport& report) {
   report.stabilised = stabilised_;
   report.indefinite = indefinite_;
+  if (pattern.n == 0) return VecX();
   LinearSolver& factors = indefinite_ ? *lu_ : solver_;
   VecX x = factors.solve(b);
   const Real b_norm = std::max(b.norm(), 1e-300);
