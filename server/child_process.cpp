@@ -60,6 +60,10 @@ std::string describe(const ExitStatus& status) {
 Pipe make_report_pipe() {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) throw system_error("pipe2");
+  // One page of buffer, not 64 KiB: a process reporting faster than the store takes its events
+  // waits (as the solver did in the daemon), so clients and the store stay a few events behind
+  // it, not hundreds - a cancel is seen as the run's last events, not before them.
+  fcntl(fds[0], F_SETPIPE_SZ, 4096);
   if (fcntl(fds[0], F_SETFL, O_NONBLOCK) != 0) {
     const std::system_error error = system_error("fcntl");
     close(fds[0]);

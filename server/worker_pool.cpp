@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <system_error>
 
 #include "server/result_publisher.hpp"
 #include "server/store_event_sink.hpp"
@@ -20,18 +21,13 @@ constexpr auto kIdlePoll = std::chrono::milliseconds(500);
 }  // namespace
 
 WorkerPool::WorkerPool(JobStore& store, const JobFiles& files, WorkerSettings settings)
-    : store_(store),
-      files_(files),
-      settings_(std::move(settings)),
-      standby_(settings_.worker_exe, static_cast<std::size_t>(settings_.workers),
-               settings_.threads_per_job) {}
+    : store_(store), files_(files), settings_(std::move(settings)) {}
 
 WorkerPool::~WorkerPool() {
   if (!threads_.empty()) drain(std::chrono::milliseconds(0));
 }
 
 void WorkerPool::start() {
-  standby_.fill();
   for (int i = 0; i < settings_.workers; ++i) threads_.emplace_back([this] { worker_loop(); });
 }
 
@@ -65,7 +61,19 @@ void WorkerPool::drain(std::chrono::milliseconds grace) {
   threads_.clear();
 }
 
+std::unique_ptr<WorkerProcess> WorkerPool::standby() const {
+  try {
+    return std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
+  } catch (const std::system_error& e) {  // out of processes or descriptors: try at the job
+    std::fprintf(stderr, "kontaktd: cannot start a job process: %s\n", e.what());
+    return nullptr;
+  }
+}
+
 void WorkerPool::worker_loop() {
+  // This thread's next job process, loading while the thread waits. Each thread starts its
+  // own: a process dies with the thread that started it (PR_SET_PDEATHSIG).
+  std::unique_ptr<WorkerProcess> next = standby();
   while (true) {
     {
       std::unique_lock lock(mutex_);
@@ -86,12 +94,12 @@ void WorkerPool::worker_loop() {
         std::fprintf(stderr, "kontaktd: cannot claim a job: %s\n", e.what());
       }
       if (!job) break;
-      run(*job);
+      run(*job, next);
     }
   }
 }
 
-void WorkerPool::run(const JobRecord& job) {
+void WorkerPool::run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next) {
   const auto stop = std::make_shared<StopSignal>();
   {
     std::lock_guard lock(mutex_);
@@ -118,8 +126,8 @@ void WorkerPool::run(const JobRecord& job) {
                             .out_dir = work,
                             .job_name = fs::path(job.main_file).stem().string(),
                             .threads = settings_.threads_per_job};
-    std::unique_ptr<WorkerProcess> process = standby_.take();
-    if (!process->start(args)) {  // died while it waited: a fresh one
+    std::unique_ptr<WorkerProcess> process = std::move(next);
+    if (!process || !process->start(args)) {  // none, or it died while it waited
       process = std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
       if (!process->start(args)) throw std::runtime_error("the job process ended before its job");
     }
@@ -134,6 +142,7 @@ void WorkerPool::run(const JobRecord& job) {
     running_.erase(job.id);
   }
   wake_.notify_all();  // drain() waits for running_ to empty
+  next = standby();    // loads while this job is concluded and the next one claimed
   if (!end) {
     std::fprintf(stderr, "kontaktd: job %s: cannot run its process: %s\n", job.id.c_str(),
                  start_error.c_str());
@@ -151,7 +160,6 @@ void WorkerPool::run(const JobRecord& job) {
            judge(*end, {.attempts = job.attempts, .max_attempts = settings_.max_attempts,
                         .time_limit = settings_.job_time_limit, .limits = settings_.limits}),
            summary);
-  standby_.fill();  // the next job's process loads now, not when that job is claimed
 }
 
 void WorkerPool::conclude(const JobRecord& job, const JobVerdict& verdict,

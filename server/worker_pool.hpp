@@ -1,6 +1,6 @@
 // The worker pool: N threads that claim queued jobs from the store. Each job runs in a worker
-// process of its own (job_worker.hpp; started ahead of need, standby_workers.hpp) under the
-// resource limits; the
+// process of its own (job_worker.hpp) under the resource limits, started by its thread ahead
+// of need; the
 // thread relays the process's events into the store, stops it on cancel, at the wall-time
 // limit or on drain (job_supervisor.hpp), publishes its files and records the verdict
 // (job_outcome.hpp). A process that crashes fails its job, never the daemon. drain() stops
@@ -22,7 +22,7 @@
 #include "server/job_outcome.hpp"
 #include "server/job_store.hpp"
 #include "server/job_supervisor.hpp"
-#include "server/standby_workers.hpp"
+#include "server/worker_process.hpp"
 #include "server/worker_protocol.hpp"
 
 namespace kontakt::server {
@@ -55,7 +55,11 @@ class WorkerPool final : public handlers::JobControl {
 
  private:
   void worker_loop();
-  void run(const JobRecord& job);
+  /// Runs the job in `next` (a waiting process; a fresh one when it is gone) and leaves the
+  /// thread's next waiting process in it.
+  void run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next);
+  /// A process waiting for a job, or nullptr when none can be started now.
+  std::unique_ptr<WorkerProcess> standby() const;
   /// Records the verdict: finish (publishing the files), requeue or retry.
   void conclude(const JobRecord& job, const JobVerdict& verdict, const JobSummary& summary);
 
@@ -67,7 +71,6 @@ class WorkerPool final : public handlers::JobControl {
   bool stopping_ = false;
   int pending_wakeups_ = 0;  ///< job_queued() calls not yet seen by a worker
   std::map<std::string, std::shared_ptr<StopSignal>> running_;
-  StandbyWorkers standby_;  ///< job processes waiting for their job
   std::vector<std::thread> threads_;
 };
 
