@@ -11,6 +11,7 @@ PACKAGES=(
   libsqlite3-dev sqlite3
   libzip-dev libssl-dev
   libgtest-dev
+  clang-14 libclang-rt-14-dev llvm-14
   python3 python3-numpy python3-h5py python3-yaml python3-jsonschema
   wrk curl
   time

@@ -5,3 +5,4 @@ cd "$(dirname "$0")/.."
 bash deploy/install-deps.sh
 KONTAKT_CMAKE_ARGS="-DKONTAKT_WARNINGS_AS_ERRORS=ON" bash deploy/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 1500
+bash deploy/test-sanitized.sh

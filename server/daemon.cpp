@@ -25,6 +25,10 @@ namespace {
 
 /// Zip uploads may unpack to this multiple of the body limit (decks compress ~10x).
 constexpr std::uint64_t kUnpackFactor = 16;
+/// Workers are this program itself (`kontaktd job-worker`), whatever happens to its file.
+const char* const kSelf = "/proc/self/exe";
+/// A deck check that takes longer is refused (a 1 GiB upload reads in well under this).
+constexpr auto kDeckCheckTimeLimit = std::chrono::seconds(120);
 
 std::set<std::string> read_tokens(const std::string& file) {
   if (file.empty()) return {};
@@ -58,11 +62,22 @@ int run_daemon(const Settings& settings) {
                 recovered.requeued, recovered.failed, recovered.canceled);
   remove_orphan_folders(store, files);
 
-  WorkerPool pool(store, files, {.workers = settings.workers,
-                                 .threads_per_job = settings.threads_per_job,
-                                 .job_time_limit = settings.job_time_limit});
-  handlers::ApiContext api{.store = store, .files = files, .control = pool,
-                           .max_unpacked = kUnpackFactor * settings.max_body};
+  const worker::Limits limits{.memory_bytes = settings.job_memory_limit,
+                              .file_size_bytes = settings.job_file_size_limit};
+  WorkerPool pool(store, files,
+                  {.workers = settings.workers,
+                   .threads_per_job = settings.threads_per_job,
+                   .job_time_limit = settings.job_time_limit,
+                   .max_attempts = settings.max_attempts,
+                   .limits = limits,
+                   .kill_grace = std::chrono::milliseconds(
+                       static_cast<long long>(1000 * settings.kill_grace)),
+                   .worker_exe = kSelf});
+  handlers::ApiContext api{
+      .store = store, .files = files, .control = pool,
+      .check_deck = process_deck_checker(kSelf, {.memory_bytes = settings.job_memory_limit},
+                                         kDeckCheckTimeLimit),
+      .max_unpacked = kUnpackFactor * settings.max_body};
   Router router = handlers::make_router(api);
   router.require_tokens(tokens);
 

@@ -6,6 +6,7 @@
 #include "server/file_range_body.hpp"
 #include "server/problem.hpp"
 #include "server/sse_format.hpp"
+#include "server/wire_request.hpp"
 
 namespace beast = boost::beast;
 namespace http = beast::http;
@@ -19,26 +20,6 @@ constexpr auto kStreamPoll = std::chrono::milliseconds(20);  // an atomic read w
 constexpr auto kStreamKeepAlive = std::chrono::seconds(15);
 constexpr int kEventsPerWrite = 500;
 constexpr std::size_t kMaxDrained = 16u << 20;  ///< bytes of a refused body read and dropped
-
-/// The plain request the router sees; nullopt when the target's query is malformed.
-std::optional<HttpRequest> to_plain(http::request<http::string_body>&& req) {
-  HttpRequest r;
-  r.method = std::string(req.method_string());
-  const std::string target(req.target());
-  const std::size_t q = target.find('?');
-  const auto path = percent_decode(target.substr(0, q), false);
-  const auto query = parse_query(q == std::string::npos ? "" : target.substr(q + 1));
-  if (!path || !query) return std::nullopt;
-  r.path = *path;
-  r.query = *query;
-  for (const auto& field : req) {
-    std::string name(field.name_string());
-    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    r.headers[name] = std::string(field.value());
-  }
-  r.body = std::move(req.body());
-  return r;
-}
 
 template <class Body>
 void copy_headers(const HttpResponse& from, http::response<Body>& to) {
@@ -76,7 +57,7 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   auto message = parser_->release();
   keep_alive_ = message.keep_alive();
   head_ = message.method() == http::verb::head;
-  auto plain = to_plain(std::move(message));
+  auto plain = to_plain_request(std::move(message));
   if (!plain) return reply(invalid_parameter("target", "malformed percent escape in the URL"));
   // The handler may parse a deck or wait on SQLite: run it off the I/O threads.
   net::post(ctx_.handler_pool, [self = shared_from_this(), request = std::move(*plain)] {

@@ -12,6 +12,10 @@
 
 namespace kontakt::server {
 
+/// Serialised JSON that never throws: bytes that are not UTF-8 (a name, a label or a deck's
+/// line quoted in a message) become U+FFFD instead of a type_error.
+std::string json_text(const nlohmann::json& j);
+
 /// "2026-11-22T10:00:00.123Z".
 std::string rfc3339(std::int64_t unix_ms);
 

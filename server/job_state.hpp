@@ -25,4 +25,11 @@ bool is_terminal(JobStatus status);
 /// The one transition table of the job state machine.
 bool transition_allowed(JobStatus from, JobStatus to);
 
+/// Every reason code a job or its status events can carry: proto/openapi.yaml's ReasonCode
+/// (a test holds the two equal). job_outcome.hpp says when each applies.
+inline constexpr std::string_view kReasonCodes[] = {
+    "not_converged", "input_error", "solver_error", "solver_crashed", "memory_limit",
+    "time_limit",    "disk_full",   "file_size_limit", "worker_lost", "internal",
+    "canceled",      "requeued"};
+
 }  // namespace kontakt::server

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
+#include "server/job_json.hpp"
 #include "server/job_store_schema.hpp"
 
 namespace kontakt::server {
@@ -169,7 +170,7 @@ bool JobStore::transition(const std::string& id, JobStatus to, const std::string
   json event{{"event", "status"}, {"status", status_name(to)}};
   if (!reason.empty()) event["reason"] = reason;
   if (!message.empty()) event["message"] = message;
-  insert_event(writer_, id, "status", event.dump());
+  insert_event(writer_, id, "status", json_text(event));
   return true;
 }
 
@@ -189,10 +190,11 @@ std::pair<InsertResult, JobRecord> JobStore::insert_job(const NewJob& job) {
                "updated_ms, n_steps, planned_time, idempotency_key, fingerprint) "
                "VALUES (?, ?, 'queued', ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   st.bind(1, job.id).bind(2, job.name).bind(3, job.main_file).bind_optional(4, job.scheme);
-  st.bind(5, json(job.labels).dump()).bind(6, now).bind(7, now);
+  st.bind(5, json_text(json(job.labels))).bind(6, now).bind(7, now);
   st.bind(8, static_cast<std::int64_t>(job.n_steps)).bind(9, job.planned_time);
   st.bind_optional(10, job.idempotency_key).bind(11, job.fingerprint).run();
-  insert_event(writer_, job.id, "status", json{{"event", "status"}, {"status", "queued"}}.dump());
+  insert_event(writer_, job.id, "status",
+               json_text(json{{"event", "status"}, {"status", "queued"}}));
   auto record = select_job(writer_, "id", job.id);
   tx.commit();
   ++generation_;
@@ -299,7 +301,7 @@ bool JobStore::finish_job(const std::string& id, JobStatus to, const std::string
   if (!transition(id, to, why, message)) return false;
   if (summary) {
     Statement st(writer_, "UPDATE jobs SET summary = ? WHERE id = ?");
-    st.bind(1, summary_to_json(*summary).dump()).bind(2, id).run();
+    st.bind(1, json_text(summary_to_json(*summary))).bind(2, id).run();
   }
   Statement clear(writer_, "DELETE FROM artifacts WHERE job_id = ?");
   clear.bind(1, id).run();
@@ -318,6 +320,17 @@ bool JobStore::requeue(const std::string& id) {
   WriteTransaction tx(writer_);
   if (!transition(id, JobStatus::Queued, "requeued", "the daemon stopped during the run")) return false;
   Statement st(writer_, "UPDATE jobs SET attempts = attempts - 1, started_ms = NULL WHERE id = ?");
+  st.bind(1, id).run();
+  tx.commit();
+  ++generation_;
+  return true;
+}
+
+bool JobStore::retry(const std::string& id, const std::string& message) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  if (!transition(id, JobStatus::Queued, "requeued", message)) return false;
+  Statement st(writer_, "UPDATE jobs SET started_ms = NULL WHERE id = ?");
   st.bind(1, id).run();
   tx.commit();
   ++generation_;
@@ -376,7 +389,7 @@ std::int64_t JobStore::append_event(const std::string& id, const std::string& ki
   Statement st(writer_, "UPDATE jobs SET updated_ms = ?, progress = coalesce(?, progress) "
                         "WHERE id = ?");
   st.bind(1, now_ms());
-  if (progress) st.bind(2, progress_to_json(*progress).dump());
+  if (progress) st.bind(2, json_text(progress_to_json(*progress)));
   else st.bind_null(2);
   st.bind(3, id).run();
   tx.commit();

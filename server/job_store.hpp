@@ -80,6 +80,9 @@ class JobStore {
                   const std::vector<Artifact>& artifacts);
   /// running -> queued (drain); the attempt is not counted against the job.
   bool requeue(const std::string& id);
+  /// running -> queued to run again after its process was killed from outside; the attempt
+  /// counts (claim_next counted it) and `message` says why.
+  bool retry(const std::string& id, const std::string& message);
   /// After a crash: running jobs are requeued, or failed with reason worker_lost once they
   /// have had `max_attempts` runs; canceling jobs end canceled.
   RecoveryReport recover(int max_attempts);

@@ -1,5 +1,7 @@
 #include "server/problem.hpp"
 
+#include "server/job_json.hpp"
+
 namespace kontakt::server {
 
 namespace {
@@ -34,7 +36,7 @@ HttpResponse problem(int status, const std::string& code, const std::string& det
   HttpResponse r;
   r.status = status;
   r.content_type = "application/problem+json";
-  r.body = body.dump();
+  r.body = json_text(body);
   return r;
 }
 
@@ -49,7 +51,7 @@ HttpResponse job_not_found(const std::string& id) {
 HttpResponse json_response(int status, const nlohmann::json& body) {
   HttpResponse r;
   r.status = status;
-  r.body = body.dump();
+  r.body = json_text(body);
   return r;
 }
 

@@ -43,22 +43,34 @@ auto seconds(double Settings::*field) {
   };
 }
 
-/// "64M", "512K", "1G" or bytes.
-std::optional<std::string> set_size(Settings& s, const std::string& v) {
-  if (v.empty()) return "a size such as 65536, 512K, 64M or 1G";
-  std::uint64_t scale = 1;
-  std::string digits = v;
-  switch (v.back()) {
-    case 'K': case 'k': scale = 1ull << 10; digits.pop_back(); break;
-    case 'M': case 'm': scale = 1ull << 20; digits.pop_back(); break;
-    case 'G': case 'g': scale = 1ull << 30; digits.pop_back(); break;
-    default: break;
-  }
-  const auto n = whole_number(digits);
-  if (!n || *n < 1 || static_cast<std::uint64_t>(*n) > (16ull << 30) / scale)
-    return "a size from 1 byte to 16G, such as 65536, 512K, 64M or 1G";
-  s.max_body = static_cast<std::uint64_t>(*n) * scale;
-  return std::nullopt;
+/// "64M", "512K", "1G" or bytes, from `min` to `max` bytes; 0 too when `zero_is_none`.
+auto bytes(std::uint64_t Settings::*field, std::uint64_t min, std::uint64_t max,
+           bool zero_is_none = false) {
+  return [=](Settings& s, const std::string& v) -> std::optional<std::string> {
+    const std::string expected = std::string(zero_is_none ? "0 (none) or " : "") +
+                                 "a size such as 65536, 512K, 64M or 1G, from " +
+                                 std::to_string(min) + " bytes to " + std::to_string(max >> 30) +
+                                 "G";
+    if (v.empty()) return expected;
+    std::uint64_t scale = 1;
+    std::string digits = v;
+    switch (v.back()) {
+      case 'K': case 'k': scale = 1ull << 10; digits.pop_back(); break;
+      case 'M': case 'm': scale = 1ull << 20; digits.pop_back(); break;
+      case 'G': case 'g': scale = 1ull << 30; digits.pop_back(); break;
+      default: break;
+    }
+    const auto n = whole_number(digits);
+    if (n && *n == 0 && zero_is_none) {
+      s.*field = 0;
+      return std::nullopt;
+    }
+    if (!n || *n < 0 || static_cast<std::uint64_t>(*n) > max / scale ||
+        static_cast<std::uint64_t>(*n) * scale < min)
+      return expected;
+    s.*field = static_cast<std::uint64_t>(*n) * scale;
+    return std::nullopt;
+  };
 }
 
 const std::vector<Option>& options() {
@@ -86,7 +98,8 @@ const std::vector<Option>& options() {
        integer_in(&Settings::workers, 1, 256)},
       {"--threads-per-job", "KONTAKTD_THREADS_PER_JOB", "solver threads per job (default 1)",
        integer_in(&Settings::threads_per_job, 1, 1024)},
-      {"--max-body", "KONTAKTD_MAX_BODY", "request body limit, e.g. 64M (default 64M)", set_size},
+      {"--max-body", "KONTAKTD_MAX_BODY", "request body limit, e.g. 64M (default 64M)",
+       bytes(&Settings::max_body, 1, 16ull << 30)},
       {"--token-file", "KONTAKTD_TOKEN_FILE", "bearer tokens, one per line (default: no auth)",
        [](Settings& s, const std::string& v) -> std::optional<std::string> {
          s.token_file = v;
@@ -96,7 +109,16 @@ const std::vector<Option>& options() {
        integer_in(&Settings::request_timeout, 1, 3600)},
       {"--job-time-limit", "KONTAKTD_JOB_TIME_LIMIT", "wall-time seconds per run (default 0 = none)",
        seconds(&Settings::job_time_limit)},
-      {"--max-attempts", "KONTAKTD_MAX_ATTEMPTS", "runs lost to crashes before a job fails (default 3)",
+      {"--job-memory-limit", "KONTAKTD_JOB_MEMORY_LIMIT",
+       "address space of each job and deck check, e.g. 8G (default 0 = none)",
+       bytes(&Settings::job_memory_limit, 64ull << 20, 1ull << 50, true)},
+      {"--job-file-size-limit", "KONTAKTD_JOB_FILE_SIZE_LIMIT",
+       "largest result file a job may write, e.g. 10G (default 0 = none)",
+       bytes(&Settings::job_file_size_limit, 4096, 1ull << 50, true)},
+      {"--kill-grace", "KONTAKTD_KILL_GRACE",
+       "seconds a canceled or timed-out job gets before SIGKILL (default 2)",
+       seconds(&Settings::kill_grace)},
+      {"--max-attempts", "KONTAKTD_MAX_ATTEMPTS", "runs lost to crashes (the daemon's or a killed job process) before a job fails (default 3)",
        integer_in(&Settings::max_attempts, 1, 100)},
       {"--drain-timeout", "KONTAKTD_DRAIN_TIMEOUT", "seconds running jobs get on SIGTERM (default 10)",
        seconds(&Settings::drain_timeout)},

@@ -21,6 +21,9 @@ struct Settings {
   std::string token_file;                ///< bearer tokens, one per line; empty = no auth
   int request_timeout = 30;              ///< seconds to read a request or write a response
   double job_time_limit = 0;             ///< wall-time seconds per run; 0 = none
+  std::uint64_t job_memory_limit = 0;    ///< address space of a job's process, bytes; 0 = none
+  std::uint64_t job_file_size_limit = 0; ///< largest file a job may write, bytes; 0 = none
+  double kill_grace = 2;                 ///< seconds from SIGTERM to SIGKILL of a stopped job
   int max_attempts = 3;                  ///< runs lost to crashes before a job fails
   double drain_timeout = 10;             ///< seconds running jobs get to finish on SIGTERM
   int io_threads = 2;

@@ -2,13 +2,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "server/job_json.hpp"
+
 namespace kontakt::server {
 
 std::string event_with_position(const StoredEvent& event) {
   nlohmann::json j = nlohmann::json::parse(event.data);
   j["seq"] = event.seq;
   j["run"] = event.run;
-  return j.dump();
+  return json_text(j);
 }
 
 std::string sse_frame(const StoredEvent& event) {

@@ -1,7 +1,6 @@
 #include "server/store_event_sink.hpp"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 
 namespace kontakt::server {
 
@@ -34,8 +33,6 @@ JobProgress advance_progress(JobProgress p, const analysis::Event& e) {
 }
 
 void StoreEventSink::on_event(const analysis::Event& event) {
-  const std::string line = analysis::to_json_line(event);
-  const std::string kind = nlohmann::json::parse(line).value("event", "unknown");
   const JobProgress next = advance_progress(progress_, event);
   const bool moved = event.kind == analysis::Event::Kind::Step ||
                      event.kind == analysis::Event::Kind::Increment ||
@@ -52,7 +49,8 @@ void StoreEventSink::on_event(const analysis::Event& event) {
       summary_.total_contact_force = event.total_contact_force;
     }
   }
-  store_.append_event(id_, kind, line, moved ? std::optional(next) : std::nullopt);
+  store_.append_event(id_, analysis::event_kind_name(event.kind), analysis::to_json_line(event),
+                      moved ? std::optional(next) : std::nullopt);
 }
 
 }  // namespace kontakt::server

@@ -1,5 +1,6 @@
-// The daemon's EventSink for one run: every solver event goes into the job's event log in
-// the store, with the progress it implies; the Done event's summary is kept for the worker.
+// The daemon's EventSink for one run: every event the job's process reports (decoded from its
+// pipe by the supervisor) goes into the job's event log in the store, with the progress it
+// implies; the Done event's summary is kept for the worker.
 #pragma once
 
 #include <optional>

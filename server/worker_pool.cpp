@@ -1,13 +1,14 @@
 #include "server/worker_pool.hpp"
 
-#include <cstdio>
+#include <unistd.h>
 
-#include "app/run_job.hpp"
+#include <cstdio>
+#include <system_error>
+
 #include "server/result_publisher.hpp"
 #include "server/store_event_sink.hpp"
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 namespace kontakt::server {
 
@@ -16,30 +17,11 @@ namespace {
 /// How long an idle worker sleeps before looking at the queue again (jobs requeued by
 /// recovery need no wake-up call).
 constexpr auto kIdlePoll = std::chrono::milliseconds(500);
-constexpr auto kWatchdogPeriod = std::chrono::milliseconds(50);
-
-struct FinalState {
-  JobStatus status;
-  std::string reason;
-};
-
-FinalState final_state(app::RunStatus run, bool time_limit_hit) {
-  switch (run) {
-    case app::RunStatus::Converged: return {JobStatus::Succeeded, ""};
-    case app::RunStatus::NotConverged: return {JobStatus::Failed, "not_converged"};
-    case app::RunStatus::InputError: return {JobStatus::Failed, "input_error"};
-    case app::RunStatus::Cancelled:
-      return time_limit_hit ? FinalState{JobStatus::Failed, "time_limit"}
-                            : FinalState{JobStatus::Canceled, "canceled"};
-    case app::RunStatus::Error: return {JobStatus::Failed, "solver_error"};
-  }
-  return {JobStatus::Failed, "internal"};
-}
 
 }  // namespace
 
 WorkerPool::WorkerPool(JobStore& store, const JobFiles& files, WorkerSettings settings)
-    : store_(store), files_(files), settings_(settings) {}
+    : store_(store), files_(files), settings_(std::move(settings)) {}
 
 WorkerPool::~WorkerPool() {
   if (!threads_.empty()) drain(std::chrono::milliseconds(0));
@@ -47,7 +29,6 @@ WorkerPool::~WorkerPool() {
 
 void WorkerPool::start() {
   for (int i = 0; i < settings_.workers; ++i) threads_.emplace_back([this] { worker_loop(); });
-  threads_.emplace_back([this] { watchdog_loop(); });
 }
 
 void WorkerPool::job_queued() {
@@ -55,17 +36,13 @@ void WorkerPool::job_queued() {
     std::lock_guard lock(mutex_);
     ++pending_wakeups_;
   }
-  wake_.notify_all();  // notify_one could wake the watchdog, which shares the condition
-}
-
-void WorkerPool::stop(RunningJob& job, StopCause cause) {
-  if (job.cause == StopCause::None) job.cause = cause;
-  job.cancel.store(true);
+  wake_.notify_all();
 }
 
 void WorkerPool::cancel_running(const std::string& id) {
   std::lock_guard lock(mutex_);
-  if (const auto it = running_.find(id); it != running_.end()) stop(*it->second, StopCause::Request);
+  if (const auto it = running_.find(id); it != running_.end())
+    it->second->request(StopCause::Request);
 }
 
 int WorkerPool::n_busy() const {
@@ -78,14 +55,25 @@ void WorkerPool::drain(std::chrono::milliseconds grace) {
   stopping_ = true;
   wake_.notify_all();
   wake_.wait_for(lock, grace, [this] { return running_.empty(); });
-  for (auto& [id, job] : running_) stop(*job, StopCause::Drain);
+  for (auto& [id, stop] : running_) stop->request(StopCause::Drain);
   lock.unlock();
-  wake_.notify_all();
   for (auto& t : threads_) t.join();
   threads_.clear();
 }
 
+std::unique_ptr<WorkerProcess> WorkerPool::standby() const {
+  try {
+    return std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
+  } catch (const std::system_error& e) {  // out of processes or descriptors: try at the job
+    std::fprintf(stderr, "kontaktd: cannot start a job process: %s\n", e.what());
+    return nullptr;
+  }
+}
+
 void WorkerPool::worker_loop() {
+  // This thread's next job process, loading while the thread waits. Each thread starts its
+  // own: a process dies with the thread that started it (PR_SET_PDEATHSIG).
+  std::unique_ptr<WorkerProcess> next = standby();
   while (true) {
     {
       std::unique_lock lock(mutex_);
@@ -106,70 +94,100 @@ void WorkerPool::worker_loop() {
         std::fprintf(stderr, "kontaktd: cannot claim a job: %s\n", e.what());
       }
       if (!job) break;
-      run(*job);
+      run(*job, next);
     }
   }
 }
 
-void WorkerPool::watchdog_loop() {
-  std::unique_lock lock(mutex_);
-  while (!stopping_ || !running_.empty()) {
-    wake_.wait_for(lock, kWatchdogPeriod);
-    if (settings_.job_time_limit <= 0) continue;
-    const auto limit = std::chrono::duration<double>(settings_.job_time_limit);
-    for (auto& [id, job] : running_)
-      if (Clock::now() - job->started > limit) stop(*job, StopCause::TimeLimit);
-  }
-}
-
-void WorkerPool::run(const JobRecord& job) {
-  const auto running = std::make_shared<RunningJob>();
-  running->started = Clock::now();
+void WorkerPool::run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next) {
+  const auto stop = std::make_shared<StopSignal>();
   {
     std::lock_guard lock(mutex_);
-    running_[job.id] = running;
-    if (stopping_) stop(*running, StopCause::Drain);  // claimed while drain() began
+    running_[job.id] = stop;
+    if (stopping_) stop->request(StopCause::Drain);  // claimed while drain() began
   }
-  // A cancel that came between the claim and the line above found no flag to raise.
+  // A cancel that came between the claim and the line above found no process to stop.
   if (const auto now = store_.find_job(job.id); now && now->status == JobStatus::Canceling)
-    cancel_running(job.id);
+    stop->request(StopCause::Request);
 
-  const fs::path work = files_.work_dir(job.id), results = files_.results_dir(job.id);
+  const fs::path work = files_.work_dir(job.id);
   std::error_code ec;
   fs::remove_all(work, ec);  // a requeued job starts from a clean slate
-  fs::remove_all(results, ec);
+  fs::remove_all(files_.results_dir(job.id), ec);
   StoreEventSink sink(store_, job.id);
-  const app::RunOutcome outcome =
-      app::run_job({.deck = files_.input_dir(job.id) / job.main_file,
-                    .out_dir = work,
-                    .job_name = fs::path(job.main_file).stem().string(),
-                    .threads = settings_.threads_per_job,
-                    .scheme = job.scheme},
-                   sink, running->cancel);
-  StopCause cause;
+  std::optional<ProcessEnd> end;
+  std::string start_error;
+  try {
+    const worker::Args args{.mode = worker::Mode::Run,
+                            .deck = files_.input_dir(job.id) / job.main_file,
+                            .scheme = job.scheme,
+                            .limits = settings_.limits,
+                            .parent_pid = getpid(),
+                            .out_dir = work,
+                            .job_name = fs::path(job.main_file).stem().string(),
+                            .threads = settings_.threads_per_job};
+    std::unique_ptr<WorkerProcess> process = std::move(next);
+    if (!process || !process->start(args)) {  // none, or it died while it waited
+      process = std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
+      if (!process->start(args)) throw std::runtime_error("the job process ended before its job");
+    }
+    end = supervise_job(*process, sink, *stop,
+                        {.time_limit = settings_.job_time_limit, .grace = settings_.kill_grace},
+                        work);
+  } catch (const std::exception& e) {  // no process (descriptor or process limits): fail the job
+    start_error = e.what();
+  }
   {
     std::lock_guard lock(mutex_);
-    cause = running->cause;
     running_.erase(job.id);
   }
   wake_.notify_all();  // drain() waits for running_ to empty
+  next = standby();    // loads while this job is concluded and the next one claimed
+  if (!end) {
+    std::fprintf(stderr, "kontaktd: job %s: cannot run its process: %s\n", job.id.c_str(),
+                 start_error.c_str());
+    conclude(job, {.status = JobStatus::Failed, .reason = "internal",
+                   .message = "cannot start the job process: " + start_error},
+             sink.summary());
+    return;
+  }
+  if (end->sink_error)
+    std::fprintf(stderr, "kontaktd: job %s: events not stored: %s\n", job.id.c_str(),
+                 end->sink_error->c_str());
+  JobSummary summary = sink.summary();
+  summary.wall_time = end->seconds;
+  conclude(job,
+           judge(*end, {.attempts = job.attempts, .max_attempts = settings_.max_attempts,
+                        .time_limit = settings_.job_time_limit, .limits = settings_.limits}),
+           summary);
+}
+
+void WorkerPool::conclude(const JobRecord& job, const JobVerdict& verdict,
+                          const JobSummary& summary) {
+  const fs::path work = files_.work_dir(job.id);
+  std::error_code ec;
   try {
-    if (cause == StopCause::Drain && outcome.status == app::RunStatus::Cancelled) {
-      store_.requeue(job.id);
-      fs::remove_all(work, ec);
-      return;
+    switch (verdict.action) {
+      // Both need a running job; one canceled meanwhile is finished below (as canceled).
+      case JobVerdict::Action::Requeue:
+        if (!store_.requeue(job.id)) break;
+        fs::remove_all(work, ec);
+        return;
+      case JobVerdict::Action::Retry:
+        if (!store_.retry(job.id, verdict.message)) break;
+        fs::remove_all(work, ec);
+        return;
+      case JobVerdict::Action::Finish:
+        break;
     }
-    JobSummary summary = sink.summary();
-    summary.wall_time = std::chrono::duration<double>(Clock::now() - running->started).count();
-    const FinalState state = final_state(outcome.status, cause == StopCause::TimeLimit);
-    const std::string message =
-        cause == StopCause::TimeLimit
-            ? "stopped at the wall-time limit of " + std::to_string(settings_.job_time_limit) + " s"
-            : outcome.message;
-    const std::vector<Artifact> artifacts = publish_results(work, results);
-    // The cancel handler raises the flag before it records `canceling`: the solver may win.
-    if (state.status == JobStatus::Canceled) store_.request_cancel(job.id);
-    store_.finish_job(job.id, state.status, state.reason, message, summary, artifacts);
+    if (!verdict.keep_results) fs::remove_all(work, ec);
+    const std::vector<Artifact> artifacts =
+        verdict.keep_results ? publish_results(work, files_.results_dir(job.id))
+                             : std::vector<Artifact>{};
+    // The cancel handler stops the process before it records `canceling`: the process may win.
+    if (verdict.status == JobStatus::Canceled) store_.request_cancel(job.id);
+    store_.finish_job(job.id, verdict.status, verdict.reason, verdict.message, summary,
+                      artifacts);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kontaktd: job %s: %s\n", job.id.c_str(), e.what());
     try {

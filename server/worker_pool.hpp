@@ -1,12 +1,15 @@
-// The worker pool: N threads that claim queued jobs from the store and run them through
-// app::run_job, so solver work never runs on the HTTP threads. A watchdog raises a job's cancel
-// flag at its wall-time limit; drain() stops claiming, lets running jobs finish for a grace
-// period and requeues the rest.
+// The worker pool: N threads that claim queued jobs from the store. Each job runs in a worker
+// process of its own (job_worker.hpp) under the resource limits, started by its thread ahead
+// of need; the
+// thread relays the process's events into the store, stops it on cancel, at the wall-time
+// limit or on drain (job_supervisor.hpp), publishes its files and records the verdict
+// (job_outcome.hpp). A process that crashes fails its job, never the daemon. drain() stops
+// claiming, lets running jobs finish for a grace period and requeues the rest.
 #pragma once
 
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -16,14 +19,22 @@
 
 #include "server/handlers/api_context.hpp"
 #include "server/job_files.hpp"
+#include "server/job_outcome.hpp"
 #include "server/job_store.hpp"
+#include "server/job_supervisor.hpp"
+#include "server/worker_process.hpp"
+#include "server/worker_protocol.hpp"
 
 namespace kontakt::server {
 
 struct WorkerSettings {
   int workers = 2;
   int threads_per_job = 1;
-  double job_time_limit = 0;  ///< seconds of wall time per run; 0 = none
+  double job_time_limit = 0;   ///< seconds of wall time per run; 0 = none
+  int max_attempts = 3;        ///< runs of a job whose process is killed from outside
+  worker::Limits limits;       ///< per job process
+  std::chrono::milliseconds kill_grace{2000};  ///< SIGTERM -> SIGKILL of a stopped job
+  std::filesystem::path worker_exe;  ///< started as `worker_exe job-worker standby ...`
 };
 
 class WorkerPool final : public handlers::JobControl {
@@ -34,7 +45,7 @@ class WorkerPool final : public handlers::JobControl {
   WorkerPool& operator=(const WorkerPool&) = delete;
 
   void start();
-  /// Stops claiming jobs, waits up to `grace` for running ones, cancels and requeues the rest.
+  /// Stops claiming jobs, waits up to `grace` for running ones, stops and requeues the rest.
   void drain(std::chrono::milliseconds grace);
 
   void job_queued() override;
@@ -43,18 +54,14 @@ class WorkerPool final : public handlers::JobControl {
   int n_busy() const override;
 
  private:
-  /// Why a running job's cancel flag was raised.
-  enum class StopCause { None, Request, TimeLimit, Drain };
-  struct RunningJob {
-    std::atomic<bool> cancel{false};
-    StopCause cause = StopCause::None;  ///< guarded by mutex_
-    std::chrono::steady_clock::time_point started;
-  };
-
   void worker_loop();
-  void watchdog_loop();
-  void run(const JobRecord& job);
-  void stop(RunningJob& job, StopCause cause);  // caller holds mutex_
+  /// Runs the job in `next` (a waiting process; a fresh one when it is gone) and leaves the
+  /// thread's next waiting process in it.
+  void run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next);
+  /// A process waiting for a job, or nullptr when none can be started now.
+  std::unique_ptr<WorkerProcess> standby() const;
+  /// Records the verdict: finish (publishing the files), requeue or retry.
+  void conclude(const JobRecord& job, const JobVerdict& verdict, const JobSummary& summary);
 
   JobStore& store_;
   const JobFiles& files_;
@@ -63,7 +70,7 @@ class WorkerPool final : public handlers::JobControl {
   std::condition_variable wake_;
   bool stopping_ = false;
   int pending_wakeups_ = 0;  ///< job_queued() calls not yet seen by a worker
-  std::map<std::string, std::shared_ptr<RunningJob>> running_;
+  std::map<std::string, std::shared_ptr<StopSignal>> running_;
   std::vector<std::thread> threads_;
 };
 

@@ -1,10 +1,12 @@
-// What the API handlers work with: the store, the job folders, and the worker pool seen
-// through JobControl (so handler tests run without workers).
+// What the API handlers work with: the store, the job folders, the worker pool seen through
+// JobControl (so handler tests run without workers) and the deck checker (a worker process in
+// the daemon, deck_check.hpp).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
+#include "server/deck_check.hpp"
 #include "server/job_files.hpp"
 #include "server/job_store.hpp"
 
@@ -27,6 +29,7 @@ struct ApiContext {
   JobStore& store;
   JobFiles& files;
   JobControl& control;
+  DeckChecker check_deck;
   std::uint64_t max_unpacked = 1ull << 30;  ///< zip uploads unpack to at most this many bytes
 };
 

@@ -59,7 +59,7 @@ HttpResponse list_jobs(ApiContext& ctx, const HttpRequest& request) {
     body["next_page_token"] = token;
     r.headers.emplace_back("Link", "<" + next_link(request, token) + ">; rel=\"next\"");
   }
-  r.body = body.dump();
+  r.body = json_text(body);
   return r;
 }
 

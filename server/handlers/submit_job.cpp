@@ -2,11 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/run_job.hpp"
-#include "model/contact.hpp"
 #include "server/deck_upload.hpp"
+#include "server/handlers/submission.hpp"
 #include "server/digest.hpp"
-#include "server/handlers/label_key.hpp"
 #include "server/include_check.hpp"
 #include "server/job_json.hpp"
 #include "server/problem.hpp"
@@ -18,110 +16,14 @@ namespace kontakt::server::handlers {
 
 namespace {
 
-constexpr std::size_t kMaxNameLength = 200, kMaxLabels = 32, kMaxLabelValue = 256,
-                      kMaxIdempotencyKey = 255;
-
-/// The submission's options and deck, from the query and (for JSON bodies) the body.
-struct Submission {
-  std::string media_type;  ///< text/plain, application/zip, ...
-  std::string deck;        ///< raw .inp text or zip bytes
-  std::optional<std::string> name, scheme, main;
-  std::map<std::string, std::string> labels;
-};
-
-std::string media_type_of(const HttpRequest& request) {
-  std::string type = request.header("content-type").value_or("text/plain");
-  type = type.substr(0, type.find(';'));
-  while (!type.empty() && type.back() == ' ') type.pop_back();
-  for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return type;
-}
-
-bool has_control_chars(const std::string& s) {
-  for (unsigned char c : s)
-    if (c < 0x20 || c == 0x7f) return true;
-  return false;
-}
-
-/// Name, scheme and labels of a submission or a resubmission; a 400 naming the bad one.
-std::optional<HttpResponse> check_options(const std::optional<std::string>& name,
-                                          const std::optional<std::string>& scheme,
-                                          const std::map<std::string, std::string>& labels) {
-  if (name && (name->empty() || name->size() > kMaxNameLength || has_control_chars(*name)))
-    return invalid_parameter("name", "1 to 200 printable characters");
-  if (scheme && !model::contact_scheme_from_name(*scheme))
-    return invalid_parameter("scheme", "unknown contact scheme '" + *scheme + "' (" +
-                                           model::contact_scheme_names() + ")");
-  if (labels.size() > kMaxLabels) return invalid_parameter("labels", "at most 32 labels");
-  for (const auto& [k, v] : labels) {
-    if (!is_label_key(k)) return invalid_parameter("labels", "key '" + k + "': 1 to 64 of A-Z a-z 0-9 _ - .");
-    if (v.size() > kMaxLabelValue || has_control_chars(v))
-      return invalid_parameter("labels", "value of '" + k + "': at most 256 printable characters");
-  }
-  return std::nullopt;
-}
-
-/// Adds a "labels" member (an object of strings) to `labels`.
-std::optional<HttpResponse> read_labels(const json& j, std::map<std::string, std::string>& labels) {
-  if (!j.is_object()) return invalid_parameter("labels", "must be an object");
-  for (const auto& [k, v] : j.items()) {
-    if (!v.is_string()) return invalid_parameter("labels", "values must be strings");
-    labels[k] = v.get<std::string>();
-  }
-  return std::nullopt;
-}
-
-/// Fills `s` from a JSON body; returns a 400 when it is malformed.
-std::optional<HttpResponse> read_json_body(const std::string& body, Submission& s) {
-  const json j = json::parse(body, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return invalid_parameter("body", "not a JSON object");
-  if (!j.contains("deck") || !j["deck"].is_string())
-    return invalid_parameter("deck", "a JSON submission needs \"deck\": the .inp text");
-  s.deck = j["deck"].get<std::string>();
-  s.media_type = "text/plain";
-  for (const char* field : {"name", "scheme", "main"}) {
-    if (!j.contains(field) || j[field].is_null()) continue;
-    if (!j[field].is_string()) return invalid_parameter(field, "must be a string");
-    const std::string v = j[field].get<std::string>();
-    if (std::string(field) == "name") s.name = v;
-    else if (std::string(field) == "scheme") s.scheme = v;
-    else s.main = v;
-  }
-  if (j.contains("labels")) return read_labels(j["labels"], s.labels);
-  return std::nullopt;
-}
-
-/// Reads and validates every option; a 400/415 response when one is bad.
-std::optional<HttpResponse> read_submission(const HttpRequest& request, Submission& s) {
-  s.media_type = media_type_of(request);
-  s.name = request.param("name");
-  s.scheme = request.param("scheme");
-  s.main = request.param("main");
-  for (const std::string& label : request.params("label")) {
-    const std::size_t eq = label.find('=');
-    if (eq == std::string::npos) return invalid_parameter("label", "expected key=value, got '" + label + "'");
-    s.labels[label.substr(0, eq)] = label.substr(eq + 1);
-  }
-  if (s.media_type == "application/json") {
-    if (auto bad = read_json_body(request.body, s)) return bad;
-  } else if (s.media_type == "text/plain" || s.media_type == "application/octet-stream" ||
-             s.media_type == "application/x-www-form-urlencoded" /* curl --data-binary */ ||
-             s.media_type == "application/zip") {
-    s.deck = request.body;
-  } else {
-    return problem(415, "unsupported_media_type",
-                   "send the deck as text/plain, application/zip or application/json, not " +
-                       s.media_type);
-  }
-  return check_options(s.name, s.scheme, s.labels);
-}
+constexpr std::size_t kMaxIdempotencyKey = 255;
 
 /// Same key, same submission <=> same fingerprint.
 std::string fingerprint_of(const Submission& s) {
   const json options{{"media_type", s.media_type}, {"name", s.name.value_or("")},
                      {"scheme", s.scheme.value_or("")}, {"main", s.main.value_or("")},
                      {"labels", s.labels}};
-  return sha256_hex(options.dump() + '\n' + sha256_hex(s.deck));
+  return sha256_hex(json_text(options) + '\n' + sha256_hex(s.deck));
 }
 
 /// Paths in the reader's messages are the server's; clients see them relative to the upload.
@@ -156,15 +58,18 @@ HttpResponse key_reused() {
                  "this Idempotency-Key was used for a different submission");
 }
 
-/// Parses the deck in place in the job's input folder; a 422 when the reader refuses it.
+/// Checks the deck in place in the job's input folder (in a worker process); a 422 when the
+/// reader refuses it or the check itself fails.
 std::optional<HttpResponse> check_stored_deck(ApiContext& ctx, NewJob& job) {
   const fs::path input_dir = ctx.files.input_dir(job.id);
   if (const auto escape = find_escaping_include(input_dir, job.main_file))
     return deck_rejected(*escape, input_dir);
-  const app::DeckCheck check = app::check_deck(input_dir / job.main_file, job.scheme);
-  if (check.error) return deck_rejected(*check.error, input_dir);
-  job.n_steps = check.n_steps;
-  job.planned_time = check.total_time;
+  const DeckCheckResult result = ctx.check_deck(input_dir / job.main_file, job.scheme);
+  if (result.failure)
+    return problem(422, "deck_check_failed", "the deck could not be checked: " + *result.failure);
+  if (result.check.error) return deck_rejected(*result.check.error, input_dir);
+  job.n_steps = result.check.n_steps;
+  job.planned_time = result.check.total_time;
   return std::nullopt;
 }
 

@@ -1,7 +1,11 @@
-// Progress events of a run: what the JSONL log, the progress line and (later) the daemon see.
+// Progress events of a run: what the JSONL log, the progress line and the daemon see. One
+// JSON schema (proto/openapi.yaml, `Event`): to_json_line writes it, from_json_line reads it
+// back (the daemon decodes what a job's process reports over its pipe).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "core/types.hpp"
 
@@ -51,5 +55,13 @@ class EventSink {
 
 /// Serialises an event as one JSON object (no trailing newline).
 std::string to_json_line(const Event& event);
+
+/// The inverse of to_json_line: every field it writes is read back, fields it leaves out keep
+/// their defaults. nullopt for anything else: not a JSON object, an unknown `event`, a field of
+/// the wrong type or out of range.
+std::optional<Event> from_json_line(std::string_view line);
+
+/// "step", "increment", ..., "done": the `event` field of a kind.
+const char* event_kind_name(Event::Kind kind);
 
 }  // namespace kontakt::analysis

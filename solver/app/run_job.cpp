@@ -116,6 +116,8 @@ DeckCheck check_deck(const fs::path& deck, const std::optional<std::string>& sch
     check.warnings = model.warnings;
   } catch (const InputError& e) {
     check.error = deck_error_of(e);
+  } catch (const std::bad_alloc&) {
+    throw;
   } catch (const std::exception& e) {
     check.error = DeckError{.file = deck.string(), .line = 0, .keyword = {}, .message = e.what()};
   }
@@ -152,6 +154,9 @@ RunOutcome run_job(const RunRequest& request, analysis::EventSink& events,
       result = outcome(RunStatus::NotConverged, e.what());
     } catch (const analysis::Cancelled& e) {
       result = outcome(RunStatus::Cancelled, e.what());
+    } catch (const std::bad_alloc&) {
+      result = outcome(RunStatus::Error, "out of memory");
+      result.out_of_memory = true;
     } catch (const std::exception& e) {
       result = outcome(RunStatus::Error, e.what());
     }

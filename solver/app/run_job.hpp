@@ -41,6 +41,7 @@ struct RunOutcome {
   int exit_code = 4;        ///< the `kontakt solve` exit code for this status
   std::string message;      ///< empty when converged
   std::optional<DeckError> deck_error;  ///< set for InputError
+  bool out_of_memory = false;  ///< an Error because an allocation failed (std::bad_alloc)
 };
 
 /// The outcome of reading a deck without solving it (the daemon checks decks on submission).
@@ -62,7 +63,8 @@ int exit_code_for(RunStatus status);
 /// "converged", "not_converged", "input_error", "cancelled", "error": the Done event's status.
 const char* run_status_name(RunStatus status);
 
-/// Reads the deck and applies the scheme override; never throws for a user error.
+/// Reads the deck and applies the scheme override; never throws for a user error (running out
+/// of memory, std::bad_alloc, is not one).
 DeckCheck check_deck(const std::filesystem::path& deck, const std::optional<std::string>& scheme);
 
 /// Runs the job. Writes OUT_DIR/JOB.{dat,hdf,xdmf,log.jsonl,sta,cvg}; the results of every

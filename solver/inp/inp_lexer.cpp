@@ -86,6 +86,7 @@ class Lexer {
       const SourceLoc where{file, line_number};
       if (line.front() == '*') {
         Record record = parse_keyword_line(line, where);
+        if (record.key.empty()) throw InputError(where, "*", "no keyword after '*'");
         if (record.key == "INCLUDE") {
           include(record, dir, depth);
         } else {
@@ -115,6 +116,11 @@ class Lexer {
     }
     std::filesystem::path path = name;
     if (path.is_relative()) path = dir / path;
+    // A FIFO or a device (/dev/zero, /dev/stdin) would never end; a folder has no text.
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+      throw InputError(record.where, record.keyword,
+                       "include file '" + path.string() + "' is not a regular file");
     std::ifstream file(path, std::ios::binary);
     if (!file) {
       throw InputError(record.where, record.keyword, "cannot open include file '" +

@@ -1,7 +1,5 @@
 #include "inp/keyword_registry.hpp"
 
-#include <array>
-
 #include "inp/keyword_handlers.hpp"
 #include "inp/record_access.hpp"
 
@@ -16,7 +14,9 @@ constexpr auto None = Block::None;
 constexpr auto Mat = Block::Material;
 constexpr auto Inter = Block::Interaction;
 
-constexpr std::array<KeywordSpec, 41> kKeywords{{
+// Sized by its initialiser: a declared size larger than the list would add entries with an
+// empty key and no handler.
+constexpr KeywordSpec kKeywords[] = {
     {"HEADING", M, None, handle_heading},
     {"NODE", M, None, handle_node},
     {"ELEMENT", M, None, handle_element},
@@ -59,7 +59,14 @@ constexpr std::array<KeywordSpec, 41> kKeywords{{
     {"CONTACTOUTPUT", S, None, handle_contact_file},
     // Only change how results are written, never the solution: accepted with a warning.
     {"FILEFORMAT", A, None, handle_ignored_output},
-}};
+};
+
+constexpr bool every_keyword_has_a_handler() {
+  for (const KeywordSpec& spec : kKeywords)
+    if (spec.key.empty() || spec.handler == nullptr) return false;
+  return true;
+}
+static_assert(every_keyword_has_a_handler());
 
 void check_placement(const Record& record, const KeywordSpec& spec, const DeckState& state) {
   const bool in_step = state.open_step.has_value();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <sstream>
 
 #include "linsolve/blas_threads.hpp"
@@ -12,6 +13,12 @@
 namespace kontakt::linsolve {
 
 namespace {
+
+/// CHOLMOD reports exhausted memory (a job's memory limit) through its status; the caller
+/// sees it as every other allocation failure.
+void throw_if_out_of_memory(const cholmod_common& common) {
+  if (common.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+}
 
 /// CHOLMOD's supernodal numeric factorisation opens an OpenMP region with a compile-time 4
 /// threads for every supernode's scatter; on small machines that is oversubscription and a
@@ -45,12 +52,14 @@ class CholmodSolver final : public LinearSolver {
     release();
     A_ = cholmod_l_allocate_sparse(pattern.n, pattern.n, pattern.nnz(), 1, 1, 1, CHOLMOD_REAL,
                                    &common_);
+    throw_if_out_of_memory(common_);
     KONTAKT_REQUIRE(A_ != nullptr, "CHOLMOD could not allocate the matrix");
     auto* p = static_cast<SuiteSparse_long*>(A_->p);
     auto* i = static_cast<SuiteSparse_long*>(A_->i);
     std::copy(pattern.col_start.begin(), pattern.col_start.end(), p);
     std::copy(pattern.row_index.begin(), pattern.row_index.end(), i);
     L_ = cholmod_l_analyze(A_, &common_);
+    throw_if_out_of_memory(common_);
     KONTAKT_REQUIRE(L_ != nullptr && common_.status >= CHOLMOD_OK,
                     "CHOLMOD symbolic analysis failed");
     flops_ = common_.fl;
@@ -61,6 +70,7 @@ class CholmodSolver final : public LinearSolver {
     std::copy(values.begin(), values.end(), static_cast<double*>(A_->x));
     use_blas_threads_for(flops_);
     cholmod_l_factorize(A_, L_, &common_);
+    throw_if_out_of_memory(common_);
     if (common_.status == CHOLMOD_NOT_POSDEF) {
       const auto* perm = static_cast<const SuiteSparse_long*>(L_->Perm);
       const int eq = static_cast<int>(perm ? perm[L_->minor] : L_->minor);
@@ -79,12 +89,14 @@ class CholmodSolver final : public LinearSolver {
   VecX solve(const VecX& rhs) override {
     cholmod_dense* b = cholmod_l_allocate_dense(rhs.size(), 1, rhs.size(), CHOLMOD_REAL,
                                                 &common_);
+    if (b == nullptr) throw std::bad_alloc();
     std::copy(rhs.data(), rhs.data() + rhs.size(), static_cast<double*>(b->x));
     cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, L_, b, &common_);
+    cholmod_l_free_dense(&b, &common_);
+    throw_if_out_of_memory(common_);
     KONTAKT_REQUIRE(x != nullptr, "CHOLMOD solve failed");
     VecX out = Eigen::Map<const VecX>(static_cast<const double*>(x->x), rhs.size());
     cholmod_l_free_dense(&x, &common_);
-    cholmod_l_free_dense(&b, &common_);
     return out;
   }
 

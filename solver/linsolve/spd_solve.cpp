@@ -43,6 +43,7 @@ VecX multiply_symmetric(const assembly::SparsePattern& pattern, const std::vecto
 void SpdSolve::factorise(const assembly::SparsePattern& pattern, const std::vector<Real>& values,
                          SpdSolveReport& report, const std::vector<Real>& skew) {
   stabilised_ = indefinite_ = unsymmetric_ = false;
+  if (pattern.n == 0) return;  // every dof prescribed: no equation left, nothing to factor
   if (std::any_of(skew.begin(), skew.end(), [](Real v) { return v != 0; })) {
     factorise_indefinite(pattern, values, skew);
     unsymmetric_ = indefinite_ = true;
@@ -127,6 +128,7 @@ VecX SpdSolve::solve(const assembly::SparsePattern& pattern, const std::vector<R
   report.stabilised = stabilised_;
   report.indefinite = indefinite_;
   report.unsymmetric = unsymmetric_;
+  if (pattern.n == 0) return VecX();
   LinearSolver& factors = indefinite_ ? *lu_ : solver_;
   VecX x = factors.solve(b);
   const Real b_norm = std::max(b.norm(), 1e-300);

@@ -28,7 +28,8 @@ struct SpdSolveReport {
   Real relative_residual = 0;  ///< |b - K x| / |b| of the returned solution
 };
 
-/// Solves K x = b with a Cholesky factorisation held by `solver` (analysed for `pattern`).
+/// Solves K x = b with a Cholesky factorisation held by `solver` (analysed for `pattern`). A
+/// system without equations (every dof prescribed, as ccx allows) has the empty solution.
 /// When `refactorise` is false the existing factorisation is reused (K unchanged).
 /// Throws SingularMatrix when K is singular and the loads excite the singular mode, and when K
 /// is indefinite unless `allow_indefinite` is set (then LU with pivoting on the full matrix,

@@ -1,6 +1,7 @@
 // UMFPACK (unsymmetric multifrontal LU) for general square systems, int64 interface.
 #include <umfpack.h>
 
+#include <new>
 #include <sstream>
 
 #include "linsolve/linear_solver.hpp"
@@ -26,6 +27,7 @@ class UmfpackSolver final : public LinearSolver {
     row_index_.assign(pattern.row_index.begin(), pattern.row_index.end());
     const int status = umfpack_dl_symbolic(n_, n_, col_start_.data(), row_index_.data(),
                                            nullptr, &symbolic_, control_, info_);
+    if (status == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
     KONTAKT_REQUIRE(status == UMFPACK_OK, "UMFPACK symbolic analysis failed (status " +
                                               std::to_string(status) + ")");
   }
@@ -38,6 +40,7 @@ class UmfpackSolver final : public LinearSolver {
                                           symbolic_, &numeric_, control_, info_);
     if (status == UMFPACK_WARNING_singular_matrix)
       throw SingularMatrix("stiffness matrix is singular", -1);
+    if (status == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
     KONTAKT_REQUIRE(status == UMFPACK_OK, "UMFPACK numeric factorisation failed (status " +
                                               std::to_string(status) + ")");
     const double rcond = info_[UMFPACK_RCOND];
@@ -54,6 +57,7 @@ class UmfpackSolver final : public LinearSolver {
     const int status = umfpack_dl_solve(UMFPACK_A, col_start_.data(), row_index_.data(),
                                         values_.data(), x.data(), rhs.data(), numeric_,
                                         control_, info_);
+    if (status == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
     KONTAKT_REQUIRE(status == UMFPACK_OK, "UMFPACK solve failed");
     return x;
   }

@@ -22,10 +22,43 @@ namespace kontakt::output {
 namespace {
 
 // ---------------------------------------------------------------- small HDF5 helpers
+// No clean-up by the library at exit: after a failed write (a full disk) HDF5 1.10 crashes
+// closing that file again there (H5F__close_cb); the writer closes its files itself. No error
+// stack on stderr either: a failure becomes an exception with the system's reason.
+[[maybe_unused]] const bool kHdf5Configured = [] {
+  H5dont_atexit();  // before any other HDF5 call
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  return true;
+}();
+
+/// The system's reason for the innermost HDF5 error ("No space left on device", "File too
+/// large"), empty when it gave none.
+std::string system_reason() {
+  std::string desc;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* error, void* out) -> herr_t {
+        auto& d = *static_cast<std::string*>(out);
+        if (d.empty() && error->desc) d = error->desc;
+        return 0;
+      },
+      &desc);
+  const std::string key = "error message = '";
+  const std::size_t start = desc.find(key);
+  if (start == std::string::npos) return {};
+  const std::size_t end = desc.find('\'', start + key.size());
+  return desc.substr(start + key.size(), end - start - key.size());
+}
+
+[[noreturn]] void fail(const std::string& what) {
+  const std::string reason = system_reason();
+  throw SolverError("HDF5: " + what + " failed" + (reason.empty() ? "" : " (" + reason + ")"));
+}
+
 class Handle {
  public:
   Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw SolverError("HDF5: " + what + " failed");
+    if (id_ < 0) fail(what);
   }
   ~Handle() {
     if (id_ >= 0) close_(id_);
@@ -42,7 +75,7 @@ class Handle {
 };
 
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw SolverError("HDF5: " + what + " failed");
+  if (status < 0) fail(what);
 }
 
 Handle make_group(hid_t loc, const std::string& name) {
@@ -225,6 +258,24 @@ struct HistoryRow {
   double stabilisation_energy, strain_energy;
 };
 
+/// The compound type of /history/increments (native layout of HistoryRow).
+Handle history_type() {
+  Handle t(H5Tcreate(H5T_COMPOUND, sizeof(HistoryRow)), H5Tclose, "compound type");
+  check(H5Tinsert(t, "step", HOFFSET(HistoryRow, step), H5T_NATIVE_INT64), "insert");
+  check(H5Tinsert(t, "increment", HOFFSET(HistoryRow, increment), H5T_NATIVE_INT64), "insert");
+  check(H5Tinsert(t, "attempts", HOFFSET(HistoryRow, attempts), H5T_NATIVE_INT64), "insert");
+  check(H5Tinsert(t, "iterations", HOFFSET(HistoryRow, iterations), H5T_NATIVE_INT64), "insert");
+  check(H5Tinsert(t, "total_time", HOFFSET(HistoryRow, total_time), H5T_NATIVE_DOUBLE), "insert");
+  check(H5Tinsert(t, "step_time", HOFFSET(HistoryRow, step_time), H5T_NATIVE_DOUBLE), "insert");
+  check(H5Tinsert(t, "dt", HOFFSET(HistoryRow, dt), H5T_NATIVE_DOUBLE), "insert");
+  check(H5Tinsert(t, "converged", HOFFSET(HistoryRow, converged), H5T_NATIVE_INT8), "insert");
+  check(H5Tinsert(t, "stabilisation_energy", HOFFSET(HistoryRow, stabilisation_energy),
+                  H5T_NATIVE_DOUBLE), "insert");
+  check(H5Tinsert(t, "strain_energy", HOFFSET(HistoryRow, strain_energy), H5T_NATIVE_DOUBLE),
+        "insert");
+  return t;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- free functions
@@ -260,6 +311,7 @@ bool file_output_due(const model::Step& step, const Frame& frame) {
 // ---------------------------------------------------------------- writer
 struct Hdf5Writer::Impl {
   hid_t file = -1;
+  hsize_t history_rows = 0;  ///< rows of /history/increments on file
   ~Impl() { close(); }
   void close() {
     if (file >= 0) H5Fclose(file);
@@ -276,7 +328,7 @@ Hdf5Writer::Hdf5Writer(const model::Model& model, std::filesystem::path dir,
       impl_(std::make_unique<Impl>()) {
   const auto p = partial_path();
   impl_->file = H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (impl_->file < 0) throw SolverError("HDF5: cannot create " + p.string());
+  if (impl_->file < 0) fail("creating " + p.string());
   const hid_t f = impl_->file;
   attr_string(f, "format", "kontakt-results");
   attr_string(f, "format_version", "1.0");
@@ -285,6 +337,9 @@ Hdf5Writer::Hdf5Writer(const model::Model& model, std::filesystem::path dir,
   attr_string(f, "created", rfc3339_now());
   write_mesh();
   Handle frames = make_group(f, "frames");
+  Handle history = make_group(f, "history");
+  create_history(history);
+  publish();
 }
 
 Hdf5Writer::~Hdf5Writer() = default;
@@ -359,6 +414,10 @@ void Hdf5Writer::write_mesh() {
   }
 
   Handle v = make_group(f, "VTKHDF");
+  attr_i64_array(v, "Version", {1, 0});
+  attr_string(v, "Type", "UnstructuredGrid");  // 16 bytes, NULLPAD, no terminator
+  Handle point_data = make_group(v, "PointData");
+  Handle cell_data = make_group(v, "CellData");
   write_i64(v, "NumberOfPoints", {static_cast<std::int64_t>(n)});
   write_i64(v, "NumberOfCells", {static_cast<std::int64_t>(m)});
   write_i64(v, "NumberOfConnectivityIds", {static_cast<std::int64_t>(conn.size())});
@@ -370,6 +429,7 @@ void Hdf5Writer::write_mesh() {
 
 void Hdf5Writer::write(const Frame& fr) {
   KONTAKT_REQUIRE(!finished_, "Hdf5Writer::write after finish");
+  begin_update();
   const hid_t f = impl_->file;
   const auto n = static_cast<hsize_t>(model_.n_nodes());
   const auto m = static_cast<hsize_t>(model_.n_elements());
@@ -442,61 +502,89 @@ void Hdf5Writer::write(const Frame& fr) {
       write_contact_points(g, model_, fr.contact_points);
     }
   }
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flush");
+  link_view_to(info);
   frames_.push_back(std::move(info));
+  publish();
+}
+
+void Hdf5Writer::link_view_to(const FrameInfo& frame) {
+  const hid_t f = impl_->file;
+  const auto relink = [&](const char* group, const std::vector<std::string>& old_arrays,
+                          const std::vector<std::string>& new_arrays) {
+    Handle g(H5Gopen2(f, (std::string("/VTKHDF/") + group).c_str(), H5P_DEFAULT), H5Gclose,
+             std::string("open /VTKHDF/") + group);
+    for (const auto& a : old_arrays) check(H5Ldelete(g, a.c_str(), H5P_DEFAULT), "unlink " + a);
+    for (const auto& a : new_arrays)
+      check(H5Lcreate_hard(f, ("/frames/" + frame.group + "/" + a).c_str(), g, a.c_str(),
+                           H5P_DEFAULT, H5P_DEFAULT),
+            std::string("hard link ") + group + "/" + a);
+  };
+  const FrameInfo none{};
+  const FrameInfo& previous = frames_.empty() ? none : frames_.back();
+  relink("PointData", previous.node_arrays, frame.node_arrays);
+  relink("CellData", previous.cell_arrays, frame.cell_arrays);
 }
 
 void Hdf5Writer::add_increment(const IncrementRecord& r) { history_.push_back(r); }
 
+void Hdf5Writer::create_history(hid_t group) {
+  Handle type = history_type();
+  const hsize_t none = 0, unlimited = H5S_UNLIMITED, chunk = 256;
+  Handle space(H5Screate_simple(1, &none, &unlimited), H5Sclose, "history dataspace");
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "dcpl");
+  check(H5Pset_chunk(dcpl, 1, &chunk), "set_chunk");
+  check(H5Pset_deflate(dcpl, 4), "set_deflate");
+  Handle ds(H5Dcreate2(group, "increments", type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+            H5Dclose, "create /history/increments");
+}
+
+void Hdf5Writer::append_history() {
+  const hsize_t old_rows = impl_->history_rows, new_rows = history_.size() - old_rows;
+  if (new_rows == 0) return;
+  std::vector<HistoryRow> rows;
+  for (std::size_t i = old_rows; i < history_.size(); ++i) {
+    const IncrementRecord& r = history_[i];
+    rows.push_back({r.step, r.increment, r.attempts, r.iterations, r.total_time, r.step_time,
+                    r.dt, static_cast<std::int8_t>(r.converged ? 1 : 0), r.stabilisation_energy,
+                    r.strain_energy});
+  }
+  Handle ds(H5Dopen2(impl_->file, "/history/increments", H5P_DEFAULT), H5Dclose,
+            "open /history/increments");
+  const hsize_t total = old_rows + new_rows;
+  check(H5Dset_extent(ds, &total), "extend /history/increments");
+  Handle file_space(H5Dget_space(ds), H5Sclose, "history file space");
+  check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &old_rows, nullptr, &new_rows, nullptr),
+        "select history rows");
+  Handle memory_space(H5Screate_simple(1, &new_rows, nullptr), H5Sclose, "history rows");
+  Handle type = history_type();
+  check(H5Dwrite(ds, type, memory_space, file_space, H5P_DEFAULT, rows.data()),
+        "write /history/increments");
+  impl_->history_rows = total;
+}
+
+void Hdf5Writer::begin_update() {
+  // The sidecar goes too: a file cut short by a failed write leaves no sidecar pointing at it.
+  for (const auto& [published, partial] :
+       {std::pair{final_path(), partial_path()},
+        std::pair{xdmf_path(), std::filesystem::path(xdmf_path().string() + ".partial")}})
+    if (std::filesystem::exists(published)) std::filesystem::rename(published, partial);
+}
+
+void Hdf5Writer::publish() {
+  append_history();
+  check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush");
+  std::filesystem::rename(partial_path(), final_path());
+  write_xdmf();
+}
+
 void Hdf5Writer::finish() {
   KONTAKT_REQUIRE(!finished_, "Hdf5Writer::finish called twice");
-  const hid_t f = impl_->file;
-  {
-    Handle h = make_group(f, "history");
-    Handle t(H5Tcreate(H5T_COMPOUND, sizeof(HistoryRow)), H5Tclose, "compound type");
-    check(H5Tinsert(t, "step", HOFFSET(HistoryRow, step), H5T_NATIVE_INT64), "insert");
-    check(H5Tinsert(t, "increment", HOFFSET(HistoryRow, increment), H5T_NATIVE_INT64), "insert");
-    check(H5Tinsert(t, "attempts", HOFFSET(HistoryRow, attempts), H5T_NATIVE_INT64), "insert");
-    check(H5Tinsert(t, "iterations", HOFFSET(HistoryRow, iterations), H5T_NATIVE_INT64), "insert");
-    check(H5Tinsert(t, "total_time", HOFFSET(HistoryRow, total_time), H5T_NATIVE_DOUBLE), "insert");
-    check(H5Tinsert(t, "step_time", HOFFSET(HistoryRow, step_time), H5T_NATIVE_DOUBLE), "insert");
-    check(H5Tinsert(t, "dt", HOFFSET(HistoryRow, dt), H5T_NATIVE_DOUBLE), "insert");
-    check(H5Tinsert(t, "converged", HOFFSET(HistoryRow, converged), H5T_NATIVE_INT8), "insert");
-    check(H5Tinsert(t, "stabilisation_energy", HOFFSET(HistoryRow, stabilisation_energy),
-                    H5T_NATIVE_DOUBLE), "insert");
-    check(H5Tinsert(t, "strain_energy", HOFFSET(HistoryRow, strain_energy), H5T_NATIVE_DOUBLE),
-          "insert");
-    std::vector<HistoryRow> rows;
-    for (const auto& r : history_)
-      rows.push_back({r.step, r.increment, r.attempts, r.iterations, r.total_time, r.step_time,
-                      r.dt, static_cast<std::int8_t>(r.converged ? 1 : 0),
-                      r.stabilisation_energy, r.strain_energy});
-    write_dataset(h, "increments", t, t, {rows.size()}, rows.data());
-  }
-  {
-    Handle v(H5Gopen2(f, "VTKHDF", H5P_DEFAULT), H5Gclose, "open /VTKHDF");
-    attr_i64_array(v, "Version", {1, 0});
-    attr_string(v, "Type", "UnstructuredGrid");  // 16 bytes, NULLPAD, no terminator
-    Handle pd = make_group(v, "PointData");
-    Handle cd = make_group(v, "CellData");
-    if (!frames_.empty()) {
-      const auto& last = frames_.back();
-      for (const auto& a : last.node_arrays)
-        check(H5Lcreate_hard(f, ("/frames/" + last.group + "/" + a).c_str(), pd, a.c_str(),
-                             H5P_DEFAULT, H5P_DEFAULT),
-              "hard link PointData/" + a);
-      for (const auto& a : last.cell_arrays)
-        check(H5Lcreate_hard(f, ("/frames/" + last.group + "/" + a).c_str(), cd, a.c_str(),
-                             H5P_DEFAULT, H5P_DEFAULT),
-              "hard link CellData/" + a);
-    }
-  }
-  check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flush");
-  if (H5Fclose(f) < 0) {
-    impl_->file = -1;
-    throw SolverError("HDF5: closing " + partial_path().string() + " failed");
-  }
+  begin_update();
+  append_history();
+  check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush");
+  const herr_t closed = H5Fclose(impl_->file);
   impl_->file = -1;
+  if (closed < 0) fail("closing " + partial_path().string());
   std::filesystem::rename(partial_path(), final_path());
   write_xdmf();
   finished_ = true;
@@ -563,9 +651,15 @@ void Hdf5Writer::write_xdmf() const {
     x << "    </Grid>\n";
   }
   x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
-  std::ofstream out(xdmf_path(), std::ios::trunc);
-  out << x.str();
-  if (!out) throw SolverError("cannot write " + xdmf_path().string());
+  // Written aside and renamed: the sidecar on disk always lists frames the file holds.
+  const std::filesystem::path partial = xdmf_path().string() + ".partial";
+  {
+    std::ofstream out(partial, std::ios::trunc);
+    out << x.str();
+    out.flush();
+    if (!out) throw SolverError("cannot write " + partial.string());
+  }
+  std::filesystem::rename(partial, xdmf_path());
 }
 
 }  // namespace kontakt::output

@@ -1,7 +1,14 @@
 // HDF5 results file (kontakt-results 1.0, with a VTKHDF 1.0 view ParaView opens directly) and
 // its XDMF 3 sidecar. Layout: proto/results_layout.md.
+//
+// Crash consistency: between writes the file is complete and flushed (mesh, every frame so far,
+// their history, the VTKHDF view of the newest frame) and named MODEL.hdf, with MODEL.xdmf
+// beside it. While the writer changes it, both are named *.partial. So a process killed at any
+// moment leaves either a whole MODEL.hdf with its sidecar or *.partial files a write was cut
+// short in (which nobody should read); kontaktd publishes only the former.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <set>
@@ -30,22 +37,23 @@ bool file_output_due(const model::Step& step, const Frame& frame);
 
 class Hdf5Writer {
  public:
-  /// Creates DIR/MODEL.hdf.partial and writes /mesh and the geometry of /VTKHDF.
-  /// `fields` as returned by requested_fields(). Throws SolverError on HDF5 failures.
+  /// Creates DIR/MODEL.hdf with /mesh, the /VTKHDF geometry, an empty history and no frames
+  /// yet. `fields` as returned by requested_fields(). Throws SolverError on HDF5 failures.
   Hdf5Writer(const model::Model& model, std::filesystem::path dir, std::string model_name,
              std::set<std::string> fields);
-  ~Hdf5Writer();  ///< closes; an unfinished file stays as MODEL.hdf.partial
+  ~Hdf5Writer();  ///< closes; without finish() the file holds the frames written so far
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
 
-  /// Appends /frames/NNNNNN (numbered from 000001 in call order). A model with contact pairs
-  /// also gets the nodal contact arrays (CDIS or CSTR requested) and the contact point table
-  /// (any contact field requested).
+  /// Appends /frames/NNNNNN (numbered from 000001 in call order) and points the VTKHDF view
+  /// (PointData/CellData hard links) at it. A model with contact pairs also gets the nodal
+  /// contact arrays (CDIS or CSTR requested) and the contact point table (any contact field
+  /// requested).
   void write(const Frame& frame);
-  /// Records one attempted increment for /history/increments (written by finish()).
+  /// Records one attempted increment for /history/increments (written with the next frame or
+  /// by finish()).
   void add_increment(const IncrementRecord& record);
-  /// Writes /history, completes /VTKHDF (attributes, PointData/CellData hard links to the last
-  /// frame), closes, renames MODEL.hdf.partial -> MODEL.hdf and writes MODEL.xdmf.
+  /// Writes the remaining history and closes the file.
   void finish();
 
   std::filesystem::path partial_path() const;
@@ -64,6 +72,13 @@ class Hdf5Writer {
 
   void write_mesh();
   void write_xdmf() const;
+  void create_history(std::int64_t group);  // an hid_t
+  void append_history();
+  void link_view_to(const FrameInfo& frame);
+  /// MODEL.hdf -> MODEL.hdf.partial (and the sidecar) before the file changes.
+  void begin_update();
+  /// Flushes and renames back (MODEL.hdf), then rewrites MODEL.xdmf.
+  void publish();
 
   const model::Model& model_;
   std::filesystem::path dir_;

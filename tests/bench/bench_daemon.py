@@ -3,13 +3,24 @@
 
 1. submit-to-done latency of a tiny deck through the daemon (POST, then the event stream
    until the job's terminal status) against `kontakt solve` of the same deck (process wall
-   time); the difference is the daemon's overhead per job;
+   time). The daemon's overhead per job is submit-to-done minus the solver's own time (the
+   `done` event's wall_time): the request, the deck check, the queue, the job's process (start,
+   libraries, exit), publishing and the event stream. With --baseline-kontaktd (a kontaktd
+   that runs jobs in its own threads, e.g. one built before issue 10) both are measured side by
+   side, alternating, in the same run;
 2. throughput of N tiny jobs (default 200) with 2 workers, submitted from 4 threads;
 3. latency of GET /v1/jobs/{id} under load from a second process (wrk, 2 threads, 4 and
-   16 connections, a few seconds each), with the p50/p99 wrk reports.
+   16 connections, a few seconds each), with the p50/p99 wrk reports;
+4. cancel latency in the middle of a factorisation: a linear block (--cancel-dofs) is solved
+   once to time its factorisation, then canceled half way through it; the latency is from the
+   cancel request to the job's terminal status event (with the baseline too, where the
+   factorisation ran to its end).
 
-Goals (issue 5): overhead under 50 ms per job, p99 status latency under 10 ms.
+Goals (issues 5 and 10): overhead under 50 ms per job, p99 status latency under 10 ms, cancel
+within the kill grace (default 2 s) however long the factorisation.
 """
+import http.client
+import json
 import argparse
 import os
 import re
@@ -25,6 +36,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "server"))
 import decks  # noqa: E402
 import kontaktd_harness as harness  # noqa: E402
+import make_block  # noqa: E402
 
 
 def cli_latency(kontakt, deck_path, work, runs):
@@ -37,24 +49,70 @@ def cli_latency(kontakt, deck_path, work, runs):
     return times
 
 
-def run_seconds(job):
-    """finished - started of a status document (millisecond timestamps)."""
-    parse = lambda t: time.mktime(time.strptime(t[:19], "%Y-%m-%dT%H:%M:%S")) + float(t[19:-1])
-    return parse(job["finished"]) - parse(job["started"])
+def daemon_sample(d, deck):
+    """(submit-to-done seconds, the daemon's overhead: that minus the solver's own wall time)."""
+    t0 = time.perf_counter()
+    status, _, job = d.submit(deck)
+    assert status == 201, job
+    events = d.sse(job["id"])
+    total = time.perf_counter() - t0
+    assert events[-1][2]["status"] == "succeeded", events[-1]
+    solver = [data for _, kind, data in events if kind == "done"][-1]["wall_time"]
+    return total, total - solver
 
 
-def daemon_latency(d, deck, runs):
-    """(submit-to-done seconds, the part of it outside the worker's run) per sample."""
-    times, outside = [], []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        status, _, job = d.submit(deck)
-        assert status == 201, job
-        events = d.sse(job["id"])
-        times.append(time.perf_counter() - t0)
-        assert events[-1][2]["status"] == "succeeded", events[-1]
-        outside.append(times[-1] - run_seconds(d.json("GET", f"/v1/jobs/{job['id']}")[2]))
-    return times, outside
+def timed_events(d, job_id, on_event=None):
+    """[(arrival time, kind, data)] of the job's event stream, read live to its end;
+    `on_event(kind, data)` is called as each arrives."""
+    conn = http.client.HTTPConnection("127.0.0.1", d.port, timeout=600)
+    events = []
+    try:
+        conn.request("GET", f"/v1/jobs/{job_id}/events", headers={"Accept": "text/event-stream"})
+        r = conn.getresponse()
+        frame = {}
+        while True:
+            raw = r.readline()
+            if not raw:
+                break
+            line = raw.decode().rstrip("\n")
+            if line.startswith(":"):
+                continue
+            if line:
+                key, _, value = line.partition(": ")
+                frame[key] = value
+                continue
+            if "data" in frame:
+                data = json.loads(frame["data"])
+                events.append((time.monotonic(), frame["event"], data))
+                if on_event:
+                    on_event(frame["event"], data)
+            frame = {}
+    finally:
+        conn.close()
+    return events
+
+
+def cancel_latency(d, deck):
+    """Cancels the block half way through its factorisation (timed by a run to the end first);
+    (factorisation seconds, seconds it still had to go at the cancel, cancel latency, status)."""
+    job = d.submit(deck)[2]["id"]
+    events = timed_events(d, job)
+    step = next(t for t, kind, _ in events if kind == "step")
+    done = next(t for t, kind, _ in events if kind == "done")
+    factorisation = done - step  # assembly is a small part of a linear block's solve
+    job = d.submit(deck)[2]["id"]
+    timer = {}
+
+    def cancel_in_factorisation(kind, data):
+        if kind == "step":
+            def cancel():
+                timer["cancel"] = time.monotonic()
+                d.json("POST", f"/v1/jobs/{job}/cancel")
+            threading.Timer(0.5 * factorisation, cancel).start()
+
+    events = timed_events(d, job, cancel_in_factorisation)
+    end, _, final = events[-1]
+    return factorisation, 0.5 * factorisation, end - timer["cancel"], final["status"]
 
 
 def throughput(d, deck, n_jobs):
@@ -99,24 +157,39 @@ def main():
     p.add_argument("--jobs", type=int, default=200)
     p.add_argument("--runs", type=int, default=20, help="latency samples of each kind")
     p.add_argument("--wrk-seconds", type=int, default=10)
+    p.add_argument("--baseline-kontaktd", help="a kontaktd to compare the overhead with (in-thread jobs)")
+    p.add_argument("--cancel-dofs", type=int, default=200000, help="size of the block canceled in part 4")
     p.add_argument("--smoke", action="store_true", help="small sizes, for CI")
     args = p.parse_args()
     if args.smoke:
-        args.jobs, args.runs, args.wrk_seconds = 20, 5, 2
+        args.jobs, args.runs, args.wrk_seconds, args.cancel_dofs = 20, 5, 2, 30000
     work = tempfile.mkdtemp(prefix="bench-daemon-")
     deck = decks.tiny()
     deck_path = os.path.join(work, "tiny.inp")
     with open(deck_path, "w") as f:
         f.write(deck)
-    d = harness.Daemon(args.kontaktd, args=["--workers", "2", "--threads-per-job", "1"]).start()
+    daemon_args = ["--workers", "2", "--threads-per-job", "1"]
+    d = harness.Daemon(args.kontaktd, args=daemon_args).start()
+    baseline = harness.Daemon(args.baseline_kontaktd, args=daemon_args).start() if args.baseline_kontaktd else None
     try:
         cli = cli_latency(args.kontakt, deck_path, work, args.runs)
-        daemon, outside = daemon_latency(d, deck, args.runs)
-        cli_ms, daemon_ms = 1e3 * statistics.median(cli), 1e3 * statistics.median(daemon)
-        print(f"1. tiny deck, median of {args.runs}: kontakt solve {cli_ms:.1f} ms (process wall time), "
-              f"daemon submit-to-done {daemon_ms:.1f} ms (p90 {1e3 * sorted(daemon)[int(0.9 * len(daemon))]:.1f} ms); "
-              f"daemon time outside the run (submit, parse, queue, publish, event stream) "
-              f"{1e3 * statistics.median(outside):.1f} ms median, {1e3 * max(outside):.1f} ms max (goal < 50 ms)")
+        print(f"1. tiny deck, median of {args.runs}: kontakt solve {1e3 * statistics.median(cli):.1f} ms "
+              f"(process wall time)")
+        samples = {"kontaktd": [], "baseline": []}
+        for _ in range(args.runs):  # alternating, so both see the same machine
+            samples["kontaktd"].append(daemon_sample(d, deck))
+            if baseline:
+                samples["baseline"].append(daemon_sample(baseline, deck))
+        for name, rows in samples.items():
+            if not rows:
+                continue
+            total = sorted(1e3 * t for t, _ in rows)
+            overhead = sorted(1e3 * o for _, o in rows)
+            label = "jobs in processes (this build)" if name == "kontaktd" else "jobs in threads (baseline)"
+            print(f"   daemon, {label}: submit-to-done {statistics.median(total):.1f} ms "
+                  f"(p90 {total[int(0.9 * len(total))]:.1f} ms); overhead (all but the solver's own "
+                  f"time) {statistics.median(overhead):.1f} ms median, {overhead[-1]:.1f} ms max "
+                  f"(goal < 50 ms)")
         n, submitted, total = throughput(d, deck, args.jobs)
         print(f"2. {n} tiny jobs, 2 workers: submitted in {submitted:.2f} s, all done in {total:.2f} s "
               f"= {n / total:.1f} jobs/s")
@@ -129,8 +202,21 @@ def main():
                   f"{rps:.0f} req/s, p50 {p50:.2f} ms, p99 {p99:.2f} ms (goal < 10 ms), non-2xx {errors}")
             if errors:
                 return 1
+        block = os.path.join(work, "block.inp")
+        dofs, _ = make_block.write_block(block, "C3D8", args.cancel_dofs)
+        with open(block) as f:
+            block_deck = f.read()
+        for name, daemon in (("processes", d), ("threads (baseline)", baseline)):
+            if daemon is None:
+                continue
+            factorisation, remaining, latency, status = cancel_latency(daemon, block_deck)
+            print(f"4. cancel during the factorisation of a {dofs}-dof C3D8 block, jobs in {name}: "
+                  f"{status} {latency:.2f} s after the request, with {remaining:.1f} s of its "
+                  f"{factorisation:.1f} s solve to go")
     finally:
         d.stop()
+        if baseline:
+            baseline.stop()
         shutil.rmtree(work, ignore_errors=True)
     return 0
 

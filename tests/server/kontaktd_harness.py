@@ -144,6 +144,30 @@ class Daemon:
         return events
 
 
+def children(pid):
+    """Processes whose parent is `pid`: a daemon's worker processes, waiting or working."""
+    out = []
+    for entry in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                if int(f.read().rsplit(")", 1)[1].split()[1]) == pid:
+                    out.append(int(entry))
+        except (OSError, IndexError, ValueError):
+            continue
+    return out
+
+
+def job_process(daemon, job_id):
+    """The pid of the process running the job (it works in the job's work folder), or None."""
+    for pid in children(daemon.proc.pid):
+        try:
+            if os.readlink(f"/proc/{pid}/cwd").endswith(f"/jobs/{job_id}/work"):
+                return pid
+        except OSError:
+            continue
+    return None
+
+
 def quote(s):
     return urllib.parse.quote(s, safe="")
 

@@ -197,3 +197,26 @@ X1, 1, 2.5
   EXPECT_NEAR(c.frames[0].U(1, 0), 0.01, 1e-14);
   EXPECT_NEAR(c.frames[1].U(1, 0), 0.01, 1e-14);
 }
+
+TEST(LinearStatic, EveryDofPrescribedIsSolvedWithoutEquations) {
+  // Issue 10: no free equation left (ccx solves this and prints the reactions); this crashed.
+  // Uniaxial strain 0.01: sigma_xx = (lambda + 2 mu) eps = 12, sigma_yy = sigma_zz = 4.
+  const auto c = solve(cube_deck(R"(*BOUNDARY
+X0, 1, 3
+X1, 2, 3
+X1, 1, 1, 0.01
+*STEP
+*STATIC
+*END STEP
+)"));
+  ASSERT_EQ(c.frames.size(), 1u);
+  const auto& f = c.frames[0];
+  EXPECT_EQ(c.events.back().status, "converged");
+  EXPECT_NEAR(f.S(0, 0), 12.0, 1e-10);
+  EXPECT_NEAR(f.S(0, 1), 4.0, 1e-10);
+  EXPECT_NEAR(f.RF(1, 0), 3.0, 1e-10);   // node 2 on x = 1: sigma_xx / 4
+  EXPECT_NEAR(f.RF(0, 0), -3.0, 1e-10);  // node 1 on x = 0
+  EXPECT_NEAR(f.RF(2, 1), 1.0, 1e-10);   // node 3 on y = 1: sigma_yy / 4
+  EXPECT_NEAR(f.RF(1, 1), -1.0, 1e-10);  // node 2 on y = 0
+  EXPECT_NEAR(f.U(6, 0), 0.01, 1e-15);
+}

@@ -88,6 +88,10 @@ std::vector<BadDeck> bad_decks() {
       {"node after step", model_plus(step + "*END STEP\n*NODE\n99, 0, 0, 0\n"), 30, "*NODE",
        "after the first *STEP"},
       {"data before keyword", "1, 2, 3\n*NODE\n", 1, "", "data line before any keyword"},
+      // Issue 10: a lone '*' used to reach a table entry without a handler (SIGSEGV).
+      {"lone asterisk", "*HEADING\n*\n*NODE\n1,0,0,0\n", 2, "*", "no keyword after '*'"},
+      {"asterisk with parameters", model_plus("* , NSET=A\n1\n"), 27, "*",
+       "no keyword after '*'"},
       {"node print unknown set", model_plus(step + "*NODE PRINT, NSET=Q\nU\n*END STEP\n"), 29,
        "*NODE PRINT", "set Q is not defined"},
       {"surface bad face", model_plus("*SURFACE, NAME=S\n1, S9\n"), 28, "*SURFACE", "S9"},
@@ -130,6 +134,28 @@ INSTANTIATE_TEST_SUITE_P(MalformedContact, inpErrors,
                          ::testing::ValuesIn(test::contact_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_bad_decks()),
                          case_name);
+
+}  // namespace
+}  // namespace kontakt::inp
+
+namespace kontakt::inp {
+namespace {
+
+TEST(inpErrorsText, APathologicalLineGivesABoundedMessage) {
+  // A megabyte keyword or field must not become a megabyte error (422 body, event, log line).
+  const std::string keyword = "*" + std::string(100000, 'K');
+  const std::string field = "*NODE\n1, " + std::string(100000, 'x') + ", 0, 0\n";
+  for (const std::string& deck : {keyword + "\n", field}) {
+    try {
+      read_deck_text(deck, "bad.inp");
+      FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+      EXPECT_LT(std::string(e.what()).size(), 1200u);
+      EXPECT_LE(e.keyword().size(), 83u);
+      EXPECT_GT(e.where().line, 0);
+    }
+  }
+}
 
 }  // namespace
 }  // namespace kontakt::inp

@@ -113,6 +113,19 @@ TEST_F(inpInclude, IncludeCycleIsAnInputError) {
   EXPECT_THROW(read_deck(dir_ / "main.inp"), InputError);
 }
 
+TEST_F(inpInclude, IncludeOfADeviceOrFolderIsAnInputError) {
+  for (const std::string& target :
+       {std::string("/dev/zero"), std::string("/dev/stdin"), dir_.string()}) {
+    try {
+      lex_deck_text("*INCLUDE, INPUT=" + target + "\n", "main.inp", dir_);
+      FAIL() << target;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, 1);
+      EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(inpReader, MissingDeckIsAnInputError) {
   EXPECT_THROW(read_deck("/nonexistent/deck.inp"), InputError);
 }

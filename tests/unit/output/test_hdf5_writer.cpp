@@ -2,7 +2,11 @@
 
 #include <cmath>
 #include <hdf5.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <array>
 #include <cstdlib>
@@ -190,31 +194,91 @@ TEST(Hdf5Writer, RequestedFieldsDefaultAndUnion) {
   EXPECT_EQ(requested_fields(m), (std::set<std::string>{"E", "EVOL", "RF"}));
 }
 
-TEST(Hdf5Writer, PartialFileIsRenamedOnFinish) {
+TEST(Hdf5Writer, FileIsCompleteBetweenWritesAndPartialOnlyDuringOne) {
   auto m = test::two_tets();
   const auto dir = fresh_dir("rename");
   {
     Hdf5Writer w(m, dir, "job", {"U"});
-    EXPECT_TRUE(fs::exists(dir / "job.hdf.partial"));
-    EXPECT_FALSE(fs::exists(dir / "job.hdf"));
-    w.write(frame_for(m, 1, 1.0));
-    w.finish();
-    EXPECT_FALSE(fs::exists(dir / "job.hdf.partial"));
+    // A results file from the start (mesh, no frame yet), never a .partial between writes.
     EXPECT_TRUE(fs::exists(dir / "job.hdf"));
     EXPECT_TRUE(fs::exists(dir / "job.xdmf"));
+    EXPECT_FALSE(fs::exists(dir / "job.hdf.partial"));
+    w.write(frame_for(m, 1, 1.0));
+    EXPECT_FALSE(fs::exists(dir / "job.hdf.partial"));
+    w.finish();
+    EXPECT_FALSE(fs::exists(dir / "job.hdf.partial"));
+    EXPECT_FALSE(fs::exists(dir / "job.xdmf.partial"));
+    EXPECT_TRUE(fs::exists(dir / "job.hdf"));
   }
-  // Abandoned writer: the .partial stays, nothing is renamed, and it is a readable file.
+  // Abandoned writer (no finish): the file keeps every frame, with its VTKHDF view.
   const auto dir2 = fresh_dir("abandon");
   {
     Hdf5Writer w(m, dir2, "job", {"U"});
     w.write(frame_for(m, 1, 1.0));
   }
-  EXPECT_TRUE(fs::exists(dir2 / "job.hdf.partial"));
-  EXPECT_FALSE(fs::exists(dir2 / "job.hdf"));
-  EXPECT_FALSE(fs::exists(dir2 / "job.xdmf"));
-  H5File f(dir2 / "job.hdf.partial");
+  EXPECT_FALSE(fs::exists(dir2 / "job.hdf.partial"));
+  H5File f(dir2 / "job.hdf");
   ASSERT_GE(f.id, 0);
   EXPECT_TRUE(exists(f.id, "/frames/000001/U"));
+  EXPECT_TRUE(same_object(f.id, "/VTKHDF/PointData/U", "/frames/000001/U"));
+}
+
+TEST(Hdf5Writer, KilledProcessLeavesEveryWrittenFrameReadable) {
+  // A job process killed (SIGKILL) between frames: no destructor, no close. The file on disk
+  // must hold every frame written, the history so far and a VTKHDF view of the newest frame.
+  auto m = test::two_tets();
+  const auto dir = fresh_dir("killed");
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    Hdf5Writer w(m, dir, "job", {"U"});
+    w.write(frame_for(m, 1, 0.5));
+    w.add_increment({1, 1, 1, 3, 0.5, 0.5, 0.5, true});
+    w.add_increment({1, 2, 1, 2, 0.75, 0.75, 0.25, true});
+    w.write(frame_for(m, 2, 0.75));
+    raise(SIGKILL);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_FALSE(fs::exists(dir / "job.hdf.partial"));
+  EXPECT_FALSE(fs::exists(dir / "job.xdmf.partial"));
+  H5File f(dir / "job.hdf");
+  ASSERT_GE(f.id, 0);
+  EXPECT_EQ(read_f64(f.id, "/frames/000002/U")[0], 0.75);
+  EXPECT_EQ(shape(f.id, "/history/increments"), (std::vector<hsize_t>{2}));
+  EXPECT_TRUE(same_object(f.id, "/VTKHDF/PointData/U", "/frames/000002/U"));
+  std::ifstream xdmf(dir / "job.xdmf");
+  std::stringstream text;
+  text << xdmf.rdbuf();
+  EXPECT_NE(text.str().find("frame_000002"), std::string::npos);
+}
+
+TEST(Hdf5Writer, AFailedWriteNamesTheSystemsReasonAndTheProcessExitsCleanly) {
+  // A job past its file size limit (RLIMIT_FSIZE, SIGXFSZ ignored as the job worker does):
+  // the write fails with EFBIG. HDF5 1.10 used to crash at exit closing that file again.
+  auto m = test::two_tets();
+  const auto dir = fresh_dir("full");
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{32 << 10, 32 << 10};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      Hdf5Writer w(m, dir, "job", {"U", "S", "E"});
+      for (int i = 1; i < 100000; ++i) w.write(frame_for(m, i, i));
+    } catch (const SolverError& e) {
+      std::exit(std::string(e.what()).find("File too large") != std::string::npos ? 7 : 8);
+    }
+    std::exit(9);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 7);
+  EXPECT_TRUE(fs::exists(dir / "job.hdf.partial")) << "the write that failed is never published";
+  EXPECT_FALSE(fs::exists(dir / "job.hdf"));
 }
 
 TEST(Hdf5Writer, Structure) {

@@ -19,6 +19,8 @@ class HandlerTest : public ::testing::Test {
   JobFiles files{dir.path()};
   testing::CountingControl control;
   handlers::ApiContext ctx{.store = store, .files = files, .control = control,
+                           .check_deck = process_deck_checker(KONTAKTD_EXE, {},
+                                                              std::chrono::seconds(60)),
                            .max_unpacked = 1 << 20};
   Router router = handlers::make_router(ctx);
 
@@ -79,6 +81,7 @@ TEST_F(HandlerTest, BadDecksAre422NamingFileLineAndKeyword) {
       {11, "1,1,2,3,4,5,6,7,99", "*ELEMENT"},                // unknown node
       {23, "*CLOAD, AMPLITUDE=NOPE", "*CLOAD"},               // unknown amplitude
       {12, "*MATERIAL", "*MATERIAL"},                         // missing NAME=
+      {3, "*", "*"},  // issue 10: a lone '*' crashed the reader and took the daemon with it
   };
   for (const Case& c : cases) {
     const auto r = submit(cube_with_line(c.line, c.text), {{"main", "bad.inp"}});
@@ -96,6 +99,18 @@ TEST_F(HandlerTest, BadDecksAre422NamingFileLineAndKeyword) {
   }
   EXPECT_EQ(control.queued, 0);
   EXPECT_TRUE(files.folder_ids().empty()) << "refused uploads leave no folder";
+}
+
+TEST_F(HandlerTest, ADeckCheckThatDiesIs422AndLeavesNothingBehind) {
+  ctx.check_deck = [](const std::filesystem::path&, const std::optional<std::string>&) {
+    return DeckCheckResult{.check = {}, .failure = "the deck reader stopped with signal 11"};
+  };
+  const auto r = submit(testing::cube_deck());
+  ASSERT_EQ(r.status, 422) << r.body;
+  EXPECT_EQ(body(r)["code"], "deck_check_failed");
+  EXPECT_NE(body(r)["detail"].get<std::string>().find("signal 11"), std::string::npos);
+  EXPECT_EQ(control.queued, 0);
+  EXPECT_TRUE(files.folder_ids().empty());
 }
 
 TEST_F(HandlerTest, BadOptionsAre400NamingTheField) {

@@ -83,6 +83,28 @@ TEST(Settings, DefaultsEnvironmentThenFlags) {
   EXPECT_NE(settings_usage().find("KONTAKTD_TOKEN_FILE"), std::string::npos);
 }
 
+TEST(Settings, JobLimits) {
+  auto no_env = [](const std::string&) -> std::optional<std::string> { return std::nullopt; };
+  const auto defaults = std::get<Settings>(parse_settings({}, no_env));
+  EXPECT_EQ(defaults.job_memory_limit, 0u);
+  EXPECT_EQ(defaults.job_file_size_limit, 0u);
+  EXPECT_EQ(defaults.kill_grace, 2.0);
+  const auto s = std::get<Settings>(parse_settings(
+      {"--job-memory-limit", "8G", "--job-file-size-limit=10M", "--kill-grace", "0.5"}, no_env));
+  EXPECT_EQ(s.job_memory_limit, 8ull << 30);
+  EXPECT_EQ(s.job_file_size_limit, 10ull << 20);
+  EXPECT_EQ(s.kill_grace, 0.5);
+  EXPECT_EQ(std::get<Settings>(parse_settings({"--job-memory-limit", "0"}, no_env)).job_memory_limit, 0u);
+  // A limit the worker could not even start under, or nonsense, is refused with its name.
+  for (const char* bad : {"1K", "63M", "-1", "lots", "2P"})
+    EXPECT_NE(std::get<std::string>(parse_settings({"--job-memory-limit", bad}, no_env))
+                  .find("--job-memory-limit"),
+              std::string::npos)
+        << bad;
+  EXPECT_TRUE(std::holds_alternative<std::string>(parse_settings({"--kill-grace", "-1"}, no_env)));
+  EXPECT_TRUE(std::holds_alternative<std::string>(parse_settings({"--max-body", "0"}, no_env)));
+}
+
 TEST(Settings, TokenFileSkipsBlanksAndComments) {
   EXPECT_EQ(parse_token_file("# team tokens\nabc\n\n  def  \r\n"), (std::vector<std::string>{"abc", "def"}));
 }
