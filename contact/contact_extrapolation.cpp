@@ -165,10 +165,10 @@ output::ContactNodal contact_nodal_values(const model::Model& model,
   nodal.COPEN = average.values.col(1);
   nodal.CSHEAR = average.values.middleCols(2, 2);
   nodal.CSLIP = average.values.middleCols(4, 2);
-  nodal.CSTATUS = VecX::Zero(model.n_nodes());
+  nodal.status = VecX::Zero(model.n_nodes());
   for (int node = 0; node < model.n_nodes(); ++node)
     if (average.n_faces[static_cast<std::size_t>(node)] > 0)
-      nodal.CSTATUS(node) = average.values(node, 6) >= 0.5 ? 1 : 2;
+      nodal.status(node) = average.values(node, 6) >= 0.5 ? 1 : 2;
   return nodal;
 }
 

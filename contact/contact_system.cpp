@@ -490,8 +490,12 @@ void ContactSystem::add_point_friction(Unit& unit, const UnitGeometry& g, Point&
   const Vec3 moved = frozen_relative_position(g.slave.x, master_x, pt.frozen) - pt.frozen_relative;
   const Real area = s.active ? s.area : pt.frozen.area;
   const Real normal_force = s.active ? s.pressure * s.area : 0;
+  // The first solve of an increment from bodies that touch without force yet holds them with
+  // the stick slope (later ones use the consistent tangent: none where nothing presses).
+  const bool touching = s.active && !(normal_force > 0) && evaluations_ == 1;
   const TangentialResponse t = coulomb_response(*pairs_[unit.pair].friction, pt.friction_start,
-                                                moved, pt.frozen.normal, area, normal_force);
+                                                moved, pt.frozen.normal, area, normal_force,
+                                                touching);
   s.friction = t.state;
   s.shear = area > 0 ? Vec3(t.force / area) : Vec3::Zero();
   s.slipping = t.slipping;

@@ -37,9 +37,10 @@ struct TangentialResponse {
 
 /// The tangential response of a point of area `area` pressed with the normal force
 /// `normal_force` (F_N = A p; a point that does not press carries no shear and relaxes its
-/// elastic stretch), from its state at the start of the increment.
+/// elastic stretch), from its state at the start of the increment. A point `touching` (in
+/// contact by its law, without force) carries no shear either but has the stick tangent.
 TangentialResponse coulomb_response(const CoulombLaw& law, const FrictionState& start,
                                     const Vec3& s, const Vec3& normal, Real area,
-                                    Real normal_force);
+                                    Real normal_force, bool touching = false);
 
 }  // namespace kontakt::contact

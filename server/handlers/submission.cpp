@@ -15,6 +15,8 @@ namespace {
 
 constexpr std::size_t kMaxNameLength = 200, kMaxLabels = 32, kMaxLabelValue = 256;
 
+}  // namespace
+
 std::string media_type_of(const HttpRequest& request) {
   std::string type = request.header("content-type").value_or("text/plain");
   type = type.substr(0, type.find(';'));
@@ -22,8 +24,6 @@ std::string media_type_of(const HttpRequest& request) {
   for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return type;
 }
-
-}  // namespace
 
 bool has_control_chars(const std::string& s) {
   for (unsigned char c : s)

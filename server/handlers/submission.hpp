@@ -32,6 +32,10 @@ std::optional<HttpResponse> check_options(const std::optional<std::string>& name
 std::optional<HttpResponse> read_labels(const nlohmann::json& j,
                                         std::map<std::string, std::string>& labels);
 
+/// The request's media type: Content-Type without parameters, lower case; text/plain when
+/// absent.
+std::string media_type_of(const HttpRequest& request);
+
 /// Names, labels and keys are printable: no C0 controls, no DEL.
 bool has_control_chars(const std::string& s);
 

@@ -34,7 +34,8 @@ struct ContactPointRecord {
 struct ContactNodal {
   VecX CPRESS, COPEN;        ///< n_nodes
   MatX CSHEAR, CSLIP;        ///< n_nodes x 2
-  VecX CSTATUS;              ///< 0 open, 1 stick, 2 slip (as ccx's CSTATUS)
+  VecX status;               ///< CSTATUS: 0 open, 1 stick, 2 slip (as ccx; not the member
+                             ///< name CSTATUS, a macro of <sys/ttydefaults.h>)
 };
 
 struct Frame {

@@ -195,7 +195,7 @@ void write_contact_nodal(hid_t frame, const ContactNodal& c, hsize_t n,
                       static_cast<hsize_t>(c.COPEN.size()) == n &&
                       static_cast<hsize_t>(c.CSHEAR.rows()) == n && c.CSHEAR.cols() == 2 &&
                       static_cast<hsize_t>(c.CSLIP.rows()) == n && c.CSLIP.cols() == 2 &&
-                      static_cast<hsize_t>(c.CSTATUS.size()) == n,
+                      static_cast<hsize_t>(c.status.size()) == n,
                   "Hdf5Writer: contact arrays have wrong sizes");
   const auto scalar = [&](const char* name, const VecX& v) {
     write_f64(frame, name, v.data(), {n});
@@ -207,7 +207,7 @@ void write_contact_nodal(hid_t frame, const ContactNodal& c, hsize_t n,
   scalar("CSHEAR2", c.CSHEAR.col(1));
   scalar("CSLIP1", c.CSLIP.col(0));
   scalar("CSLIP2", c.CSLIP.col(1));
-  scalar("CSTATUS", c.CSTATUS);
+  scalar("CSTATUS", c.status);
 }
 
 /// /frames/NNNNNN/contact_points: one row per contact point, deck labels, status 0 open,

@@ -234,15 +234,15 @@ TEST(ContactExtrapolation, FrameValuesFromFacePointsAndSlaveNodes) {
     EXPECT_DOUBLE_EQ(nodal.COPEN(n), on_face ? -1e-5 : 0) << n;
     EXPECT_DOUBLE_EQ(nodal.CSHEAR(n, 1), on_face ? -10 : 0) << n;
     EXPECT_DOUBLE_EQ(nodal.CSLIP(n, 0), on_face ? 1e-6 : 0) << n;
-    EXPECT_EQ(nodal.CSTATUS(n), on_face ? 1 : 0) << n;  // all sticking
+    EXPECT_EQ(nodal.status(n), on_face ? 1 : 0) << n;  // all sticking
   }
   // Sliding points give status 2; a node flagged outside the master surface gets nothing.
   for (auto& p : points) p.sticking = false;
   std::vector<bool> outside(8, false);
   outside[static_cast<std::size_t>(face[0])] = true;
   const auto sliding = contact_nodal_values(m, points, outside);
-  EXPECT_EQ(sliding.CSTATUS(face[1]), 2);
-  EXPECT_EQ(sliding.CSTATUS(face[0]), 0);
+  EXPECT_EQ(sliding.status(face[1]), 2);
+  EXPECT_EQ(sliding.status(face[0]), 0);
   EXPECT_DOUBLE_EQ(sliding.CPRESS(face[0]), 0);
   // Node-to-surface: the slave node's own values.
   output::ContactPointRecord node;
@@ -253,6 +253,6 @@ TEST(ContactExtrapolation, FrameValuesFromFacePointsAndSlaveNodes) {
   const auto nts = contact_nodal_values(m, {node}, {});
   EXPECT_DOUBLE_EQ(nts.CPRESS(6), 42);
   EXPECT_DOUBLE_EQ(nts.COPEN(6), 1e-6);
-  EXPECT_EQ(nts.CSTATUS(6), 2);
+  EXPECT_EQ(nts.status(6), 2);
   EXPECT_DOUBLE_EQ(nts.CPRESS.sum(), 42);
 }

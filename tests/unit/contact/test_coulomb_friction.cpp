@@ -125,6 +125,21 @@ TEST(CoulombFriction, AnOpenPointCarriesNoShearAndRelaxes) {
   EXPECT_NEAR(r.state.tangential.x(), 3e-3, 1e-15);
 }
 
+TEST(CoulombFriction, ATouchingPointCarriesNoShearButHasTheStickTangent) {
+  // Bodies that just touch: no force yet, but the Newton step must not let them slide freely.
+  const CoulombLaw law{.mu = 0.2, .stick_slope = 1000};
+  const TangentialResponse r = coulomb_response(law, {}, Vec3(2e-3, 0, 0), Vec3::UnitZ(), kArea,
+                                                0, /*touching=*/true);
+  EXPECT_EQ(r.force, Vec3::Zero());
+  EXPECT_FALSE(r.slipping);
+  const Mat3 P = Mat3::Identity() - Vec3::UnitZ() * Vec3::UnitZ().transpose();
+  EXPECT_EQ(r.d_force_d_s, 1000 * kArea * P);
+  EXPECT_EQ(r.state.slip, r.state.tangential);  // the stretch while not pressing is no stick
+  // Once it presses, the same stretch is the stick predictor from the start state.
+  const TangentialResponse pressed = at(law, {}, Vec3(1e-5, 0, 0), 10);
+  EXPECT_FALSE(pressed.slipping);
+}
+
 TEST(CoulombFriction, TiedContactAlwaysSticksEvenInTension) {
   const CoulombLaw tied{.mu = std::numeric_limits<Real>::infinity(), .stick_slope = 1e6};
   for (Real fn : {-50.0, 0.0, 50.0}) {

@@ -531,13 +531,13 @@ Frame contact_frame(const model::Model& m, int inc, double t) {
   c.COPEN = VecX::Zero(n);
   c.CSHEAR = MatX::Zero(n, 2);
   c.CSLIP = MatX::Zero(n, 2);
-  c.CSTATUS = VecX::Zero(n);
+  c.status = VecX::Zero(n);
   c.CPRESS(1) = 100;
   c.COPEN(1) = -1e-5;
   c.CSHEAR.row(1) << 3, 4;
   c.CSLIP.row(2) << 5, 6;
-  c.CSTATUS(1) = 1;
-  c.CSTATUS(2) = 2;
+  c.status(1) = 1;
+  c.status(2) = 2;
   for (int k = 0; k < 3; ++k) {
     ContactPointRecord p;
     p.slave_element = 1;
