@@ -154,6 +154,39 @@ void report(model::Model& model, const model::Tie& tie, Real tolerance,
         std::to_string(model.mesh.node_ids[static_cast<std::size_t>(farthest->node)]) + ")");
 }
 
+/// A tie with SCHEME= as a surface-to-surface pair with a TIED law of its own in every step:
+/// K = lambda = 50 E (ccx's default penalty, E of the first material), mu unused.
+void add_tied_contact(model::Model& model, const model::Tie& tie) {
+  const Real young = model.materials.empty() ? 0 : model.materials.front().young;
+  if (!(young > 0))
+    throw InputError(tie.where, "*TIE",
+                     "tie " + tie.name + ": SCHEME= takes its stiffness from Young's modulus of "
+                     "the first material, which has none");
+  model::SurfaceInteraction interaction;
+  interaction.name = "*TIE " + tie.name;
+  interaction.behavior.law = model::SurfaceBehavior::Law::Tied;
+  interaction.behavior.stiffness = 50 * young;
+  interaction.friction = model::Friction{.mu = 1, .stick_slope = 50 * young, .where = tie.where};
+  interaction.where = tie.where;
+  for (model::Step& step : model.steps) {
+    step.interaction_friction.push_back(interaction.friction);
+    step.interaction_behavior.push_back(interaction.behavior);
+  }
+  model::ContactPair pair;
+  pair.interaction = static_cast<int>(model.interactions.size());
+  pair.slave = tie.slave;
+  pair.master = tie.master;
+  pair.scheme = *tie.scheme;
+  pair.scheme_given = true;
+  pair.where = tie.where;
+  model.interactions.push_back(std::move(interaction));
+  model.contact_pairs.push_back(std::move(pair));
+  model.warnings.push_back(tie.where.file + ":" + std::to_string(tie.where.line) +
+                           ": *TIE: tie " + tie.name + " through TIED contact (" +
+                           model::contact_scheme_name(*tie.scheme) + "), K = lambda = 50 E = " +
+                           number(50 * young));
+}
+
 }  // namespace
 
 Real typical_master_size(std::span<const SurfaceFace> faces, const MatX3& coords) {
@@ -241,6 +274,11 @@ int apply_ties(model::Model& model) {
         continue;
       }
       const SurfaceFace& face = master.faces[static_cast<std::size_t>(foot->face)];
+      if (tie.adjust) moves.push_back({node, foot->x, foot->distance});
+      if (tie.scheme) {  // bound by the contact pair below, not by equations
+        ++n_tied;
+        continue;
+      }
       bool tied = false;
       for (int dof = 0; dof < 3; ++dof) {
         char& taken = constrained[3 * static_cast<std::size_t>(node) + dof];
@@ -254,9 +292,9 @@ int apply_ties(model::Model& model) {
         tied = true;
       }
       n_tied += tied;
-      if (tie.adjust) moves.push_back({node, foot->x, foot->distance});
     }
     for (const Move& m : moves) model.mesh.coords.row(m.node) = m.to.transpose();
+    if (tie.scheme) add_tied_contact(model, tie);
     // Moves below this are round-off of the projection, not worth a word.
     report(model, tie, tolerance, missed, skipped, moves, 1e-9 * master.largest_face);
   }

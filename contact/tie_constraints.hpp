@@ -57,7 +57,8 @@ model::Equation tie_equation(int slave, int dof, const SurfaceFace& face, const 
                              const SourceLoc& where);
 
 /// The model-setup step of every *TIE, in deck order (a later tie sees the nodes an earlier
-/// one moved): appends the tie constraints to `model.equations`, moves the tied slave nodes
+/// one moved): appends the tie constraints to `model.equations` (a tie with SCHEME=: a
+/// surface-to-surface pair with a TIED law, K = lambda = 50 E), moves the tied slave nodes
 /// onto their feet unless ADJUST=NO, and reports free nodes, skipped dofs and moves in
 /// `model.warnings`. Returns the number of slave nodes tied in at least one direction. Run
 /// once, after reading, before any analysis.

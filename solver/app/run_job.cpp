@@ -24,19 +24,20 @@ DeckError deck_error_of(const InputError& e) {
 }
 
 /// The deck's model, set up for the analysis: the scheme override applied to every contact
-/// pair, the *TIE constraints generated (their slave nodes moved), and the slave nodes ADJUST
-/// asks for moved onto their master surfaces.
+/// pair of the deck, the *TIE constraints generated (their slave nodes moved; a tie with its
+/// own SCHEME= keeps it), and the slave nodes ADJUST asks for moved onto their master surfaces.
 model::Model read_model(const fs::path& deck, const std::optional<std::string>& scheme) {
   model::Model model = inp::read_deck(deck);
+  if (scheme) {
+    const auto parsed = model::contact_scheme_from_name(*scheme);
+    if (!parsed)
+      throw InputError({deck.string(), 0}, "scheme",
+                       "unknown contact scheme '" + *scheme + "' (" +
+                           model::contact_scheme_names() + ")");
+    for (auto& pair : model.contact_pairs) pair.scheme = *parsed;
+  }
   contact::apply_ties(model);
   contact::adjust_slave_nodes(model);
-  if (!scheme) return model;
-  const auto parsed = model::contact_scheme_from_name(*scheme);
-  if (!parsed)
-    throw InputError({deck.string(), 0}, "scheme",
-                     "unknown contact scheme '" + *scheme + "' (" +
-                         model::contact_scheme_names() + ")");
-  for (auto& pair : model.contact_pairs) pair.scheme = *parsed;
   return model;
 }
 

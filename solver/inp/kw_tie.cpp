@@ -1,5 +1,5 @@
-// *TIE (ccx 2.20, ties.f): NAME= (required), POSITION TOLERANCE=, ADJUST=NO, and one
-// "slave, master" data line. Ties for cyclic symmetry and multistage periodicity are another
+// *TIE (ccx 2.20, ties.f): NAME= (required), POSITION TOLERANCE=, ADJUST=NO, our SCHEME= (tie
+// through TIED contact), and one "slave, master" data line. Ties for cyclic symmetry and multistage periodicity are another
 // analysis and are refused. The surface names are resolved at the end of the deck
 // (tie_builder.cpp): ccx allows the surfaces after the *TIE.
 #include <string_view>
@@ -39,6 +39,20 @@ bool adjust(const Record& record) {
   fail(record, "ADJUST=" + *value + ": expected NO (or YES, the default)");
 }
 
+/// SCHEME=: a surface-to-surface scheme (TIED contact is face to face).
+std::optional<model::ContactScheme> scheme(const Record& record) {
+  const std::optional<std::string> name = name_value(record, "SCHEME");
+  if (!name) return std::nullopt;
+  const std::optional<model::ContactScheme> parsed = model::contact_scheme_from_name(*name);
+  if (!parsed)
+    fail(record, "SCHEME=" + *name + " is not a contact scheme (" +
+                     model::contact_scheme_names() + ")");
+  if (parsed->kind == model::ContactScheme::Kind::NodeToSurface)
+    fail(record, "SCHEME=" + *name + ": a tie through contact is face to face; use a "
+                 "surface-to-surface scheme (lgc7, the default of surface-to-surface pairs)");
+  return parsed;
+}
+
 }  // namespace
 
 void handle_tie(const Record& record, DeckState& state) {
@@ -49,7 +63,7 @@ void handle_tie(const Record& record, DeckState& state) {
       fail(record, std::string(shown) +
                        " ties are not supported (Kontakt ties surfaces for tied contact only; "
                        "cyclic symmetry and multistage analyses are out of its scope)");
-  check_params(record, {"NAME", "POSITIONTOLERANCE", "ADJUST"});
+  check_params(record, {"NAME", "POSITIONTOLERANCE", "ADJUST", "SCHEME"});
   const std::optional<std::string> name = name_value(record, "NAME");
   if (!name) fail(record, "NAME= is required (the tie name is lacking)");
   for (const model::Tie& other : state.model.ties)
@@ -60,6 +74,7 @@ void handle_tie(const Record& record, DeckState& state) {
   tie.name = *name;
   tie.position_tolerance = position_tolerance(record, state);
   tie.adjust = adjust(record);
+  tie.scheme = scheme(record);
   require_line_count(record, 1, 1);
   const DataLine& line = record.lines.front();
   require_field_count(record, line, 2, 2);

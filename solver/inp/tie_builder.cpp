@@ -27,6 +27,12 @@ void resolve_ties(const DeckState& state) {
                        "tie " + tie.name + ": master surface " + tie.master +
                            " must be made of element faces (a node surface has no faces to "
                            "tie to)");
+    const model::Surface& slave = state.model.surfaces.at(tie.slave);
+    if (tie.scheme && slave.kind != model::Surface::Kind::ElementFaces)
+      throw InputError(tie.where, "*TIE",
+                       "tie " + tie.name + ": SCHEME= ties through surface-to-surface contact, "
+                       "which needs element faces on the slave side; " + tie.slave +
+                       " is a node surface");
     if (tie.slave == tie.master)
       throw InputError(tie.where, "*TIE",
                        "tie " + tie.name + ": surface " + tie.slave +

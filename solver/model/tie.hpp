@@ -1,6 +1,7 @@
 // *TIE (ccx's MPC-based tied contact): the slave side's nodes follow the master surface. The
-// model-setup step contact::apply_ties turns each tie into linear equations (Model::equations)
-// and, unless ADJUST=NO, moves the slave nodes onto the master surface.
+// model-setup step contact::apply_ties turns each tie into linear equations (Model::equations),
+// or with SCHEME= into a TIED contact pair, and, unless ADJUST=NO, moves the slave nodes onto
+// the master surface.
 #pragma once
 
 #include <optional>
@@ -8,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/types.hpp"
+#include "model/contact.hpp"
 
 namespace kontakt::model {
 
@@ -18,6 +20,9 @@ struct Tie {
   /// given below 1e-10): ccx's default, 2.5 % of a typical master element size.
   std::optional<Real> position_tolerance;
   bool adjust = true;             ///< move the tied slave nodes onto the master surface
+  /// SCHEME= (Kontakt's extension): tie through segment-to-segment TIED contact with this
+  /// scheme (thesis §5.5, exact on the tied patch test) instead of ccx's MPCs.
+  std::optional<ContactScheme> scheme;
   SourceLoc where;                ///< the data line
 };
 

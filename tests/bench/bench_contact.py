@@ -11,7 +11,12 @@
             time split (contact search and points, pattern and symbolic analysis, elements,
             contact forces, factorisation, solve), the first iteration of an increment against
             the later ones, and both solvers' peak nodal pressure against Hertz's p0 at the load
-            each measured (4 x the quarter's top reaction).
+            each measured (4 x the quarter's top reaction);
+  sliding   the frictional model (issue 11): the sliding block of friction.md 5.1
+            (tests/contact_models/sliding_block.py) refined 6 times (--refine: lower 30 x 30 x
+            12, upper 24 x 24 x 12 C3D8, about 61,000 dofs), mu = 0.3, pressed (step 1) then
+            dragged by 0.02 in increments of 0.05 (step 2); also reported: each solver's
+            pressed points at the end and how far their shear is from mu p.
 For each: wall time, peak resident memory (ru_maxrss of the child, what /usr/bin/time -v
 reports), converged increments and Newton iterations (from the .sta files, every attempt
 counted), the ratios kontakt/ccx, and the agreement of the final displacements
@@ -24,7 +29,8 @@ CCX_NPROC_EQUATION_SOLVER, kontakt through --threads. Machines are noisy: compar
 of one run, not absolute times across runs.
 
   bench_contact.py --kontakt build/solver/app/kontakt [--n 16] [--element C3D8] [--work DIR]
-  bench_contact.py --kontakt ... --smoke     # CI: hueeber1, a 6^3 cube, the sphere at a/h 4
+  bench_contact.py --kontakt ... --smoke     # CI: hueeber1, a 6^3 cube, the sphere at a/h 4,
+                                             # the sliding block unrefined
 """
 import argparse
 import os
@@ -36,8 +42,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_models"))
 sys.path.insert(0, os.path.join(HERE, "..", "verification"))
 import contact_fields  # noqa: E402
+import contact_friction  # noqa: E402
 import datfile  # noqa: E402
 import hertz_sphere  # noqa: E402
+import sliding_block  # noqa: E402
 import solvers  # noqa: E402
 import thesis_blocks  # noqa: E402
 from solvers import run_peer  # noqa: E402
@@ -104,6 +112,7 @@ def main():
     p.add_argument("--n", type=int, default=16, help="cube: elements per direction and body")
     p.add_argument("--element", default="C3D8", choices=("C3D8", "C3D20", "C3D20R"))
     p.add_argument("--ratio", type=float, default=12, help="sphere: a / h at the contact")
+    p.add_argument("--refine", type=int, default=6, help="sliding: mesh refinement factor")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--timeout", type=int, default=3600)
     p.add_argument("--suite", default=run_peer.DEFAULT_SUITE)
@@ -112,17 +121,23 @@ def main():
     args = p.parse_args()
     n = SMOKE_N if args.smoke else args.n
     ratio = SMOKE_RATIO if args.smoke else args.ratio
+    refine = 1 if args.smoke else args.refine
     work = os.path.abspath(args.work)
     run_peer.stage_deck(args.suite, "hueeber1", os.path.join(work, "hueeber1"))
     cube = thesis_blocks.cube(args.element, n=n)
     cube_name = f"cube_{args.element.lower()}_{n}"
     sphere_name = f"sphere_{ratio:g}"
+    sliding_name = f"sliding_{refine}"
+    sliding = sliding_block.sliding_block(refine=refine)
+    sliding.node_prints = [("UPPER", "ZMIN", "U"), ("UPPER", "ZMAX", "RF")]
     cases = [("hueeber1", os.path.join(work, "hueeber1", "hueeber1.inp")),
              (cube_name, solvers.write_deck(cube, os.path.join(work, "cube"),
                                             "SURFACE TO SURFACE", cube_name)),
              (sphere_name, solvers.write_deck(hertz_sphere.hertz_sphere(ratio=ratio),
                                               os.path.join(work, "sphere"), "SURFACE TO SURFACE",
-                                              sphere_name))]
+                                              sphere_name)),
+             (sliding_name, solvers.write_deck(sliding, os.path.join(work, "sliding"),
+                                               "SURFACE TO SURFACE", sliding_name))]
     print(f"threads: {args.threads} for both; kontakt scheme: {args.scheme or 'default'}")
     print(f"{'case':18s} {'solver':8s} {'status':14s} {'wall s':>8s} {'peak MiB':>9s} "
           f"{'increments':>10s} {'iterations':>10s}")
@@ -143,6 +158,8 @@ def main():
         ok &= agreement <= AGREEMENT
         if name == sphere_name:
             ok &= report_sphere(name, ccx, ours)
+        if name == sliding_name:
+            ok &= report_sliding(name, ccx, ours)
     return 0 if ok else 1
 
 
@@ -166,6 +183,20 @@ def report_sphere(name, ccx, ours):
     print(f"{name:18s} peak nodal pressure against Hertz p0: ccx {errors['ccx']:+.2%}, "
           f"kontakt {errors['kontakt']:+.2%}")
     return True
+
+
+def report_sliding(name, ccx, ours):
+    """Prints how far each solver's pressed points are from |q| = mu p at the end of the drag;
+    False when kontakt's are not there within the print precision."""
+    passed = True
+    for label, run in (("ccx", ccx), ("kontakt", ours)):
+        try:
+            ok, detail = contact_friction.check_run(run, name, sliding_block.MU)
+        except (OSError, KeyError, ValueError) as e:
+            ok, detail = False, f"figures not read: {e}"
+        print(f"{name:18s} {label:8s} {detail}")
+        passed &= ok or label == "ccx"
+    return passed
 
 
 if __name__ == "__main__":

@@ -35,6 +35,7 @@ status, iterations, increments, wall time); the decks stay in WORK/VARIANT/pNNN/
   contact_stability.py --kontakt EXE --variants punch_c3d8 cube_c3d8 --n 8 --schemes lgc7 \
       --z -2e-4 0 1e-4 1e-3 1e-2                   # open gaps, touching, overlap (issue 9)
   contact_stability.py --kontakt EXE --variants punch_c3d8 --n 4 6 8 12 16 --schemes lgc7
+  contact_stability.py --kontakt EXE --friction slip --schemes lgc7   # friction (issue 11)
 """
 import argparse
 import concurrent.futures
@@ -64,6 +65,21 @@ DEFAULT_VARIANTS = ("cube_c3d8", "cube_c3d20", "punch_c3d8", "punch_c3d20")
 SMOKE = dict(placements=4, n={"C3D8": 4, "C3D20": 3, "C3D20R": 3}, schemes=("nts", "gauss", "lgc7"),
              z=(None, 1e-3), timeout=120)
 GOAL_SCHEME, GOAL_REFERENCE = "lgc7", "SURFACE TO SURFACE"
+# --friction (issue 11): the thesis' coefficient and stick slope; "slip" adds a second step
+# that drags the upper top by SLIP_DRAG in x (the punch's footprint is 0.38 wide), past the
+# slip onset mu p / lambda = 4e-5 of the top pressure.
+FRICTION = (0.2, 5e5)
+SLIP_DRAG, SLIP_INCREMENT = 0.01, (0.1, 1.0, 1e-5, 0.1)
+
+
+def with_friction(model, mode):
+    """The model with *FRICTION (mode "stick" or "slip") and, for "slip", the drag step."""
+    if mode == "none":
+        return model
+    model.friction = FRICTION
+    if mode == "slip":
+        model.later_steps = [(SLIP_INCREMENT, [("UPPER", "ZMAX", 1, 1, SLIP_DRAG)])]
+    return model
 
 
 def placements(count, seed, side):
@@ -91,14 +107,16 @@ def run_variant(name, n, z, args, columns, pool, writer):
     every column; (variant label, {column: [runs]})."""
     make, side, element = VARIANTS[name]
     height = {} if z is None else {"z": z}
-    label = f"{name} {n}^3" + ("" if z is None else f" z={z:g}")
+    label = (f"{name} {n}^3" + ("" if z is None else f" z={z:g}")
+             + ("" if args.friction == "none" else f" {args.friction}"))
     first = make(element, n=n, **height)
     problems = mesh_checks.check_model(first)
     if problems:
         raise RuntimeError(f"{label}: invalid mesh: {problems[0]}")
     tasks = []
     for index, (x, y, rotation) in enumerate(placements(args.placements, args.seed, side)):
-        model = make(element, n=n, x=x, y=y, rotation=rotation, **height)
+        model = with_friction(make(element, n=n, x=x, y=y, rotation=rotation, **height),
+                              args.friction)
         folder = os.path.join(args.work, label.replace(" ", "_").replace("^", ""), f"p{index:03d}")
         decks = {t: solvers.write_deck(model, folder, t, name) for t in solvers.CCX_TYPES}
         for column_label, column in columns:
@@ -123,6 +141,9 @@ def main():
                                                     "16; smoke 4 for C3D8, 3 for C3D20)")
     p.add_argument("--z", type=float, nargs="+", help="heights of the upper body's lowest point "
                                                      "above the lower top (default: the body's)")
+    p.add_argument("--friction", choices=("none", "stick", "slip"), default="none",
+                   help="Coulomb friction mu 0.2, lambda 5e5 (stick), and a second step that "
+                        "drags the upper top by 0.01 in x (slip)")
     p.add_argument("--seed", type=int, default=2024)
     p.add_argument("--jobs", type=int, default=2, help="runs in parallel (each single-threaded)")
     p.add_argument("--timeout", type=int, default=1800, help="seconds per run")

@@ -217,6 +217,40 @@ TEST(ApplyTies, TiesNonMatchingBlocksAndMovesSlaveNodesOntoTheMaster) {
   }
 }
 
+TEST(ApplyTies, ASchemeTiesThroughATiedContactPairInsteadOfEquations) {
+  fixtures::TwoBlocks t;
+  t.lower = {"C3D8", 3, 1};
+  t.upper = {"C3D8", 2, 1};
+  t.gap = 1e-3;
+  model::Tie tie;
+  tie.scheme = model::contact_scheme_from_name("lgc7");
+  model::Model m = tied_blocks(t, tie);
+  ASSERT_FALSE(m.steps.empty());
+  const std::size_t interactions = m.interactions.size();
+  EXPECT_EQ(apply_ties(m), 9);
+  EXPECT_TRUE(m.equations.empty());
+  ASSERT_EQ(m.contact_pairs.size(), 1u);
+  const model::ContactPair& pair = m.contact_pairs[0];
+  EXPECT_EQ(pair.type, model::ContactPair::Type::SurfaceToSurface);
+  EXPECT_EQ(pair.slave, "SLAVE");
+  EXPECT_EQ(pair.master, "MASTER");
+  EXPECT_EQ(model::contact_scheme_name(pair.scheme), "lgc7");
+  ASSERT_EQ(m.interactions.size(), interactions + 1);
+  const model::SurfaceInteraction& tied = m.interactions.at(static_cast<std::size_t>(pair.interaction));
+  EXPECT_EQ(tied.behavior.law, model::SurfaceBehavior::Law::Tied);
+  const Real k = 50 * m.materials.front().young;
+  EXPECT_DOUBLE_EQ(tied.behavior.stiffness, k);
+  for (const model::Step& step : m.steps) {  // in force in every step
+    ASSERT_EQ(step.interaction_behavior.size(), m.interactions.size());
+    EXPECT_EQ(step.interaction_behavior.back().law, model::SurfaceBehavior::Law::Tied);
+    ASSERT_TRUE(step.interaction_friction.back().has_value());
+    EXPECT_DOUBLE_EQ(step.interaction_friction.back()->stick_slope, k);
+  }
+  const ContactSurface slave = make_contact_surface(m, m.surfaces.at("SLAVE"));
+  for (int n : slave.nodes) EXPECT_NEAR(m.mesh.coords(n, 2), 1.0, 1e-12);  // ADJUST: moved
+  EXPECT_TRUE(has_warning(m, "through TIED contact (lgc7)"));
+}
+
 TEST(ApplyTies, NodesOutOfReachStayFreeWithAWarningNamingThem) {
   // The upper block hangs over the lower one's edge: its slave nodes beyond x = 1 have no
   // master face.

@@ -54,6 +54,13 @@ std::vector<BadDeck> tie_bad_decks() {
        "*TIE", "tie T is defined twice (first at bad.inp:34)"},
       {"tie within a step", plus("*STEP\n*STATIC\n" + tie + "\nSLAVE, MASTER\n*END STEP\n"), 35,
        "*TIE", "not allowed within a step"},
+      {"tie with an unknown scheme", plus(tie + ", SCHEME=mortar\nSLAVE, MASTER\n"), 33, "*TIE",
+       "SCHEME=MORTAR is not a contact scheme"},
+      {"tie through node-to-surface contact", plus(tie + ", SCHEME=nts\nSLAVE, MASTER\n"), 33,
+       "*TIE", "a tie through contact is face to face"},
+      {"tie through contact from a node slave",
+       plus(tie + ", SCHEME=lgc7\nSLAVENODES, MASTER\n"), 34, "*TIE",
+       "SCHEME= ties through surface-to-surface contact, which needs element faces"},
   };
 }
 
@@ -84,6 +91,17 @@ TEST(inpTie, ReadsNameToleranceAdjustAndSurfaces) {
   EXPECT_EQ(t.where.file, "tie.inp");
   EXPECT_EQ(t.where.line, 34);  // the data line
   EXPECT_TRUE(m.equations.empty());  // the constraints are a model-setup step, not the reader's
+}
+
+TEST(inpTie, SchemeTiesThroughContact) {
+  const model::Model m = read_deck_text(
+      test::two_cubes_surfaces() + "*TIE, NAME=T, SCHEME=lgc3\nSLAVE, MASTER\n" +
+          "*TIE, NAME=U\nSLAVE, MASTER\n" + kStep, "tie.inp");
+  ASSERT_EQ(m.ties.size(), 2u);
+  ASSERT_TRUE(m.ties[0].scheme.has_value());
+  EXPECT_EQ(model::contact_scheme_name(*m.ties[0].scheme), "lgc3");
+  EXPECT_FALSE(m.ties[1].scheme.has_value());  // ccx's MPCs
+  EXPECT_TRUE(m.contact_pairs.empty());       // the pair is a model-setup step
 }
 
 TEST(inpTie, DefaultsNodeSlaveAndSurfacesDefinedLater) {

@@ -42,7 +42,9 @@ bool known(const std::string& reason) {
 }
 
 TEST(JobOutcome, ReasonCodesAreTheOpenApiEnum) {
-  const auto doc = nlohmann::json::parse(find_asset("/v1/openapi.json")->body);
+  const auto asset = find_asset("v1/openapi.json");
+  ASSERT_TRUE(asset.has_value());
+  const auto doc = nlohmann::json::parse(asset->body);
   const auto listed = doc["components"]["schemas"]["ReasonCode"]["enum"].get<std::vector<std::string>>();
   EXPECT_EQ(listed, std::vector<std::string>(std::begin(kReasonCodes), std::end(kReasonCodes)));
 }
