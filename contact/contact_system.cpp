@@ -490,12 +490,8 @@ void ContactSystem::add_point_friction(Unit& unit, const UnitGeometry& g, Point&
   const Vec3 moved = frozen_relative_position(g.slave.x, master_x, pt.frozen) - pt.frozen_relative;
   const Real area = s.active ? s.area : pt.frozen.area;
   const Real normal_force = s.active ? s.pressure * s.area : 0;
-  // The first solve of an increment from bodies that touch without force yet holds them with
-  // the stick slope (later ones use the consistent tangent: none where nothing presses).
-  const bool touching = s.active && !(normal_force > 0) && evaluations_ == 1;
   const TangentialResponse t = coulomb_response(*pairs_[unit.pair].friction, pt.friction_start,
-                                                moved, pt.frozen.normal, area, normal_force,
-                                                touching);
+                                                moved, pt.frozen.normal, area, normal_force);
   s.friction = t.state;
   s.shear = area > 0 ? Vec3(t.force / area) : Vec3::Zero();
   s.slipping = t.slipping;
@@ -583,6 +579,10 @@ namespace {
 /// fraction of the largest overclosure redoes the increment smaller.
 constexpr Real kDriftTolerance = 0.1;
 
+/// Gaps are differences of coordinates: a drift below this share of the slave coordinates is
+/// round-off, not drift (a tied interface in pure shear has no overclosure to compare with).
+constexpr Real kGapRoundOff = 1e-12;
+
 /// How much smaller: the drift grows about with the square of the increment (the frozen normal
 /// is off by the sliding, and so is the gap along it: measured 0.37 -> 0.11 for a halved
 /// increment on the Hertz model), so one redo aims at 80 % of the tolerance.
@@ -628,7 +628,7 @@ Real ContactSystem::max_pressure() const {
 }
 
 Real ContactSystem::frozen_drift(const VecX& u) const {
-  Real drift = 0, overclosure = 0;
+  Real drift = 0, overclosure = 0, coordinates = 0;
   for (const Unit& unit : units_) {
     if (!pairs_[unit.pair].scheme.linear) continue;
     bool any = false;
@@ -637,6 +637,7 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
     const UnitGeometry g = geometry(unit, u);
     std::vector<const FaceGeometry*> c;
     for (const auto& m : g.masters) c.push_back(&m);
+    coordinates = std::max(coordinates, g.slave.x.cwiseAbs().maxCoeff());
     for (const Point& pt : unit.points) {
       if (!pt.trial.active) continue;
       overclosure = std::max(overclosure, -pt.trial.gap);
@@ -645,6 +646,7 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
       drift = std::max(drift, std::abs(pt.trial.gap - (fresh.foot.gap + gap_offset(pt))));
     }
   }
+  if (drift <= kGapRoundOff * coordinates) return 0;
   return overclosure > 0 ? drift / overclosure : 0;
 }
 

@@ -3,7 +3,7 @@
 // follows the tangential relative displacement with slope k_t = lambda * A up to mu |F_N|,
 // where it slips. A radial return from the increment's start state:
 //   t    = t_start + (I - n n^T) s            accumulated tangential relative displacement
-//   F_tr = k_t (t - t_slip,start)             elastic predictor
+//   F_tr = k_t (I - n n^T)(t - t_slip,start)  elastic predictor (in the current tangent plane)
 //   stick when |F_tr| <= mu F_N:  F_T = F_tr
 //   slip otherwise:               F_T = mu F_N xi,  xi = F_tr / |F_tr|,
 //                                 t_slip = t_slip,start + (|F_tr| - mu F_N) / k_t xi
@@ -37,10 +37,9 @@ struct TangentialResponse {
 
 /// The tangential response of a point of area `area` pressed with the normal force
 /// `normal_force` (F_N = A p; a point that does not press carries no shear and relaxes its
-/// elastic stretch), from its state at the start of the increment. A point `touching` (in
-/// contact by its law, without force) carries no shear either but has the stick tangent.
+/// elastic stretch), from its state at the start of the increment.
 TangentialResponse coulomb_response(const CoulombLaw& law, const FrictionState& start,
                                     const Vec3& s, const Vec3& normal, Real area,
-                                    Real normal_force, bool touching = false);
+                                    Real normal_force);
 
 }  // namespace kontakt::contact
