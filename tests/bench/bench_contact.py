@@ -113,6 +113,8 @@ def main():
     p.add_argument("--element", default="C3D8", choices=("C3D8", "C3D20", "C3D20R"))
     p.add_argument("--ratio", type=float, default=12, help="sphere: a / h at the contact")
     p.add_argument("--refine", type=int, default=6, help="sliding: mesh refinement factor")
+    p.add_argument("--cases", nargs="+", choices=("hueeber1", "cube", "sphere", "sliding"),
+                   default=["hueeber1", "cube", "sphere", "sliding"], help="default: all four")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--timeout", type=int, default=3600)
     p.add_argument("--suite", default=run_peer.DEFAULT_SUITE)
@@ -123,26 +125,29 @@ def main():
     ratio = SMOKE_RATIO if args.smoke else args.ratio
     refine = 1 if args.smoke else args.refine
     work = os.path.abspath(args.work)
-    run_peer.stage_deck(args.suite, "hueeber1", os.path.join(work, "hueeber1"))
-    cube = thesis_blocks.cube(args.element, n=n)
-    cube_name = f"cube_{args.element.lower()}_{n}"
-    sphere_name = f"sphere_{ratio:g}"
-    sliding_name = f"sliding_{refine}"
-    sliding = sliding_block.sliding_block(refine=refine)
-    sliding.node_prints = [("UPPER", "ZMIN", "U"), ("UPPER", "ZMAX", "RF")]
-    cases = [("hueeber1", os.path.join(work, "hueeber1", "hueeber1.inp")),
-             (cube_name, solvers.write_deck(cube, os.path.join(work, "cube"),
-                                            "SURFACE TO SURFACE", cube_name)),
-             (sphere_name, solvers.write_deck(hertz_sphere.hertz_sphere(ratio=ratio),
-                                              os.path.join(work, "sphere"), "SURFACE TO SURFACE",
-                                              sphere_name)),
-             (sliding_name, solvers.write_deck(sliding, os.path.join(work, "sliding"),
-                                               "SURFACE TO SURFACE", sliding_name))]
+    names = {"hueeber1": "hueeber1", "cube": f"cube_{args.element.lower()}_{n}",
+             "sphere": f"sphere_{ratio:g}", "sliding": f"sliding_{refine}"}
+
+    def write_case(case, name):
+        """The case's deck in WORK/CASE/, its path."""
+        if case == "hueeber1":
+            run_peer.stage_deck(args.suite, name, os.path.join(work, name))
+            return os.path.join(work, name, name + ".inp")
+        if case == "cube":
+            model = thesis_blocks.cube(args.element, n=n)
+        elif case == "sphere":
+            model = hertz_sphere.hertz_sphere(ratio=ratio)
+        else:
+            model = sliding_block.sliding_block(refine=refine)
+            model.node_prints = [("UPPER", "ZMIN", "U"), ("UPPER", "ZMAX", "RF")]
+        return solvers.write_deck(model, os.path.join(work, case), "SURFACE TO SURFACE", name)
+
+    cases = [(case, names[case], write_case(case, names[case])) for case in args.cases]
     print(f"threads: {args.threads} for both; kontakt scheme: {args.scheme or 'default'}")
     print(f"{'case':18s} {'solver':8s} {'status':14s} {'wall s':>8s} {'peak MiB':>9s} "
           f"{'increments':>10s} {'iterations':>10s}")
     ok = True
-    for name, deck in cases:
+    for case, name, deck in cases:
         ccx, ours, agreement = bench_case(name, deck, args)
         for label, run in (("ccx", ccx), ("kontakt", ours)):
             print(f"{name:18s} {label:8s} {run.status:14s} {run.wall:8.2f} {run.peak_mib:9.0f} "
@@ -156,9 +161,9 @@ def main():
               f"{ours.iterations / max(ccx.iterations, 1):.3f}; final displacements differ by "
               f"{agreement:.2e}")
         ok &= agreement <= AGREEMENT
-        if name == sphere_name:
+        if case == "sphere":
             ok &= report_sphere(name, ccx, ours)
-        if name == sliding_name:
+        if case == "sliding":
             ok &= report_sliding(name, ccx, ours)
     return 0 if ok else 1
 
