@@ -70,7 +70,8 @@ def kontakt_timing(run, name):
     import json
     first, later, previous, times = [], [], 0.0, {}
     path = os.path.join(run.result_dir, name + ".log.jsonl")
-    if not os.path.exists(path) and os.path.exists(os.path.join(run.result_dir, name + ".fake.log")):
+    stand_in = os.path.exists(os.path.join(run.result_dir, name + ".fake.log"))
+    if not os.path.exists(path) and stand_in:
         return None
     with open(path) as f:
         for line in f:

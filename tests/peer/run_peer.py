@@ -16,17 +16,19 @@ Statuses: PASS; FAIL (worst block error above the tolerance, or a structural mis
 ERROR (kontakt's exit code and the first line of its stderr, or no reference);
 TIMEOUT (kontakt ran longer than --timeout).
 
---contact is the frictionless contact set (select_decks.py's contact rule): kontakt runs with
-its default scheme per pair type (nts for node to surface, lgc7 for surface to surface); only
-the blocks of the last printed time are compared, the displacement blocks decide (tolerance
-1e-2) and the worst other final block (stresses, forces, contact output) is reported in the
-detail; increments and iterations are printed side by side with ccx's.
-
---tie is the *TIE set (select_decks.py's tie rule): the derived deck select_decks.tie_deck()
-writes (perturbation steps dropped, prints added to decks that print none) runs through both
-solvers; a deck without NLGEOM is compared like the linear set (every block, 1e-4), one with
-NLGEOM like the nonlinear set (blocks at common times, 1e-3); increments and iterations are
+--contact is the contact set, friction and tied contact included (select_decks.py's contact
+rule, on the derived deck below): kontakt runs with its default scheme per pair type (nts for
+node to surface, lgc7 for surface to surface); only the blocks of the last printed time are
+compared, the displacement blocks decide (tolerance 1e-2) and the worst other final block
+(stresses, forces, contact output) is reported in the detail; increments and iterations are
 printed side by side with ccx's.
+
+--tie is the *TIE set (select_decks.py's tie rule): the derived deck
+select_decks.derived_deck() writes (perturbation steps dropped, prints added to decks that
+print none; the contact set runs it too) runs through both solvers; a deck without NLGEOM is
+compared like the linear set (every block, 1e-4), one with NLGEOM like the nonlinear set
+(blocks at common times, 1e-3); increments and iterations are printed side by side with
+ccx's.
 
 --reference-only runs no kontakt: it compares ccx 2.20's output with the suite's 2.11
 .dat.ref files for the qualifying decks and counts agreement at 1e-4 and 1e-3 (a check of this
@@ -59,13 +61,11 @@ def direct_solver(text):
 
 
 def deck_text(source_dir, name, args):
-    """The deck's text as this run's set uses it: the tie set's derived deck, the contact
-    set's with prints added to decks that print nothing, else the deck's own."""
+    """The deck's text as this run's set uses it: the contact and tie sets' derived deck, else
+    the deck's own."""
     deck_file = select_decks.deck_path(source_dir, name)
-    if args.tie:
-        return select_decks.tie_deck(deck_file)
-    if args.contact:
-        return select_decks.with_prints(deck_file, select_decks.read_text(deck_file))
+    if args.tie or args.contact:
+        return select_decks.derived_deck(deck_file)
     return select_decks.read_text(deck_file)
 
 

@@ -29,6 +29,15 @@ column, or the same temperature on every line). The linear set keeps *PLASTIC ou
 switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
 whatever its *STEP says.
 
+The contact and tie sets judge and run the deck as `derived_deck()` derives it (run_peer.py
+runs that derived deck through both solvers; it is written into the work folder, never into
+this repository):
+  - steps with PERTURBATION are dropped with their procedure (a frequency analysis after the
+    static step: the static step is what is compared);
+  - a deck that prints nothing (*NODE PRINT / *EL PRINT) gets *NODE PRINT U of every node and
+    *EL PRINT S of every element in each step (sets PEERNALL / PEEREALL, defined before the
+    first *STEP), so its .frd-only results can be compared as .dat blocks.
+
 The contact peer set (`contact=True`, run_peer.py --contact): penalty contact with friction.
 The same rule, with NLGEOM allowed (not required; C3D8I excluded), the keywords of
 CONTACT_KEYWORDS admitted, and:
@@ -40,22 +49,15 @@ CONTACT_KEYWORDS admitted, and:
     an unsupported keyword (one fixed set of pairs);
   - the deck has at least one *CONTACT PAIR.
 
-The tie peer set (`tie=True`, run_peer.py --tie): MPC-based tied contact (*TIE). The rule
-is applied to the deck as `tie_deck()` derives it (run_peer.py runs that derived deck through
-both solvers; it is written into the work folder, never into this repository):
-  - steps with PERTURBATION are dropped with their procedure (a frequency analysis after the
-    static step: the static step is what is compared);
-  - a deck that prints nothing (*NODE PRINT / *EL PRINT) gets *NODE PRINT U of every node and
-    *EL PRINT S of every element in each step (sets PEERNALL / PEEREALL, defined before the
-    first *STEP), so its .frd-only results can be compared as .dat blocks.
-Then the same rule, with NLGEOM allowed (not required), and:
+The tie peer set (`tie=True`, run_peer.py --tie): MPC-based tied contact (*TIE). The same
+rule on the derived deck, with NLGEOM allowed (not required), and:
   - *TIE admitted without CYCLIC SYMMETRY and MULTISTAGE (other analyses);
   - *SURFACE INTERACTION, *SURFACE BEHAVIOR and *FRICTION admitted: without a *CONTACT PAIR
     (which stays unsupported in this set) they define nothing the analysis uses;
   - the deck has at least one *TIE.
 
 Usable as a module (`exclusion_reason`, `qualifying_decks`, `element_types`, `read_text`,
-`included_files`, `tie_deck`) and as a CLI:
+`included_files`, `derived_deck`) and as a CLI:
     select_decks.py [--suite DIR] [--nlgeom | --contact | --tie]
                                                excluded decks with reasons, grouped counts,
                                                then the qualifying names
@@ -183,10 +185,10 @@ def _id_lines(ids):
     return [", ".join(str(i) for i in ids[k:k + 16]) for k in range(0, len(ids), 16)]
 
 
-def tie_deck(path):
-    """Text of the deck at `path` as the tie set runs it (module docstring): PERTURBATION steps
-    dropped, prints added (with_prints). Only the deck's own text changes (its *INCLUDE files
-    are used as they are)."""
+def derived_deck(path):
+    """Text of the deck at `path` as the contact and tie sets run it (module docstring):
+    PERTURBATION steps dropped, prints added (with_prints). Only the deck's own text changes
+    (its *INCLUDE files are used as they are)."""
     kept, dropping = [], False
     for line in read_text(path).splitlines():
         if _STEP_LINE.match(line) and "PERTURBATION" in line.upper().replace(" ", ""):
@@ -274,7 +276,7 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
     """THE qualification rule (see the module docstring): None when the deck at `path`
     qualifies, otherwise a short text naming the first check it breaks."""
     try:
-        recs = list(records(path, text=tie_deck(path) if tie else None))
+        recs = list(records(path, text=derived_deck(path) if tie or contact else None))
     except (OSError, UnicodeError, ValueError) as e:
         return f"unreadable: {e}"
     prints, has_nlgeom, pairs, ties = 0, False, 0, 0

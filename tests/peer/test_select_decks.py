@@ -4,7 +4,7 @@ import os
 import tempfile
 import unittest
 
-from select_decks import exclusion_reason, qualifying_decks, records, tie_deck
+from select_decks import exclusion_reason, qualifying_decks, records, derived_deck
 
 GOOD = """*HEADING
 a cube
@@ -174,14 +174,14 @@ S1, S2
                 self.assertEqual(exclusion_reason(self.deck(tie.replace(old, new, 1)), tie=True),
                                  reason)
 
-    def test_tie_deck_drops_perturbation_steps_and_adds_prints(self):
+    def test_derived_deck_drops_perturbation_steps_and_adds_prints(self):
         silent = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")
         silent = silent.replace("*ELEMENT, TYPE=C3D8, ELSET=EALL\n1, 1, 2, 3, 4, 5, 6, 7, 8\n",
                                 "*ELEMENT, TYPE=C3D20, ELSET=EALL\n1, 1, 2, 3, 4, 5, 6, 7, 8, 9, "
                                 "10, 11, 12, 13, 14, 15, 16,\n17, 18, 19, 20\n2, 1, 2, 3, 4, 5, "
                                 "6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,\n17, 18, 19, 20\n")
         silent += "*STEP, PERTURBATION\n*FREQUENCY\n10\n*END STEP\n"
-        derived = tie_deck(self.deck(silent))
+        derived = derived_deck(self.deck(silent))
         self.assertNotIn("PERTURBATION", derived)
         self.assertNotIn("*FREQUENCY\n10", derived)
         recs = list(records(self.deck(derived, "derived")))
@@ -192,7 +192,7 @@ S1, S2
         step = keywords.index("STEP")
         self.assertLess(keywords.index("NSET"), step)  # sets before the first step
         self.assertEqual(keywords[-3:], ["NODE PRINT", "EL PRINT", "END STEP"])
-        self.assertEqual(tie_deck(self.deck(GOOD)), GOOD)  # printing decks keep their prints
+        self.assertEqual(derived_deck(self.deck(GOOD)), GOOD)  # printing decks keep their prints
 
 
 if __name__ == "__main__":
