@@ -570,6 +570,10 @@ namespace {
 /// fraction of the largest overclosure redoes the increment smaller.
 constexpr Real kDriftTolerance = 0.1;
 
+/// Gaps are differences of coordinates: a drift below this share of the slave coordinates is
+/// round-off, not drift (a tied interface in pure shear has no overclosure to compare with).
+constexpr Real kGapRoundOff = 1e-12;
+
 /// How much smaller: the drift grows about with the square of the increment (the frozen normal
 /// is off by the sliding, and so is the gap along it: measured 0.37 -> 0.11 for a halved
 /// increment on the Hertz model), so one redo aims at 80 % of the tolerance.
@@ -615,7 +619,7 @@ Real ContactSystem::max_pressure() const {
 }
 
 Real ContactSystem::frozen_drift(const VecX& u) const {
-  Real drift = 0, overclosure = 0;
+  Real drift = 0, overclosure = 0, coordinates = 0;
   for (const Unit& unit : units_) {
     if (!pairs_[unit.pair].scheme.linear) continue;
     bool any = false;
@@ -624,6 +628,7 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
     const UnitGeometry g = geometry(unit, u);
     std::vector<const FaceGeometry*> c;
     for (const auto& m : g.masters) c.push_back(&m);
+    coordinates = std::max(coordinates, g.slave.x.cwiseAbs().maxCoeff());
     for (const Point& pt : unit.points) {
       if (!pt.trial.active) continue;
       overclosure = std::max(overclosure, -pt.trial.gap);
@@ -632,6 +637,7 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
       drift = std::max(drift, std::abs(pt.trial.gap - (fresh.foot.gap + gap_offset(pt))));
     }
   }
+  if (drift <= kGapRoundOff * coordinates) return 0;
   return overclosure > 0 ? drift / overclosure : 0;
 }
 

@@ -162,7 +162,7 @@ class ContactSystem {
 
   /// Largest difference between a frozen gap and the gap of a fresh projection, over the
   /// active points of the linear variants, relative to their largest overclosure (0 when
-  /// nothing is active).
+  /// nothing is active, or when the difference is round-off of the coordinates).
   Real frozen_drift(const VecX& u) const;
 
  private:

@@ -11,13 +11,18 @@ TangentialResponse coulomb_response(const CoulombLaw& law, const FrictionState& 
   const Mat3 P = Mat3::Identity() - normal * normal.transpose();
   r.state.tangential = start.tangential + P * s;
   const bool tied = !std::isfinite(law.mu);  // sticks whatever the normal force
+  const Real k_t = law.stick_slope * area;
+  // The state was tangent to the normal of an earlier increment: only its part in the current
+  // tangent plane is stretch (else the shear gets a normal part and |q| < mu p in slip).
+  const Vec3 elastic = P * (r.state.tangential - start.slip);
   if (!(normal_force > 0) && !tied) {
-    // Open (or in a law's tension tail): no shear; the elastic stretch goes, the slip stays.
+    // Touching without pressure (or in a law's tension tail): no shear; the elastic stretch
+    // goes, the slip stays. Not yet stretched, it sticks with zero force (ccx: a zero trial
+    // force sticks), so bodies held only by friction are no mechanism before they press.
     r.state.slip = r.state.tangential;
+    if (elastic.isZero(0)) r.d_force_d_s = k_t * P;
     return r;
   }
-  const Real k_t = law.stick_slope * area;
-  const Vec3 elastic = r.state.tangential - start.slip;
   const Vec3 trial = k_t * elastic;
   const Real trial_norm = trial.norm();
   const Real limit = tied ? trial_norm : law.mu * normal_force;

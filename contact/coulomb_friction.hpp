@@ -3,7 +3,7 @@
 // follows the tangential relative displacement with slope k_t = lambda * A up to mu |F_N|,
 // where it slips. A radial return from the increment's start state:
 //   t    = t_start + (I - n n^T) s            accumulated tangential relative displacement
-//   F_tr = k_t (t - t_slip,start)             elastic predictor
+//   F_tr = k_t (I - n n^T)(t - t_slip,start)  elastic predictor (in the current tangent plane)
 //   stick when |F_tr| <= mu F_N:  F_T = F_tr
 //   slip otherwise:               F_T = mu F_N xi,  xi = F_tr / |F_tr|,
 //                                 t_slip = t_slip,start + (|F_tr| - mu F_N) / k_t xi

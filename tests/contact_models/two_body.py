@@ -8,7 +8,8 @@ LOWER_ZMIN, UPPER_ZMAX (the sets of tests/verification/meshgen.py's box meshes);
 elements form the element set LOWER / UPPER.
 
 Contact: `*SURFACE INTERACTION, NAME=CONTACT` with `*SURFACE BEHAVIOR,
-PRESSURE-OVERCLOSURE=LINEAR` (K, sigma_inf) and one `*CONTACT PAIR, INTERACTION=CONTACT,
+PRESSURE-OVERCLOSURE=LINEAR` (K, sigma_inf) or `=TIED` (K only: bonded, no slip limit, tension
+allowed; surface to surface only, and ccx requires a *FRICTION card for its stick slope) and one `*CONTACT PAIR, INTERACTION=CONTACT,
 TYPE=...` with the face-based surfaces SLAVE and MASTER (the boundary faces of one body whose
 corner nodes all lie in a node set). No SCHEME= parameter is written: ccx does not know it;
 kontakt gets the scheme from `--scheme`. With `tie` set, the bodies are bonded by `*TIE,
@@ -25,6 +26,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import meshgen  # noqa: E402
 
 CONTACT_TYPES = ("SURFACE TO SURFACE", "NODE TO SURFACE")
+LAWS = ("LINEAR", "TIED")  # PRESSURE-OVERCLOSURE=
 
 
 @dataclass
@@ -45,6 +47,7 @@ class TwoBodyModel:
     master: tuple
     contact_type: str = "SURFACE TO SURFACE"
     penalty: float = 1e7      # K, pressure per unit overclosure
+    law: str = "LINEAR"       # PRESSURE-OVERCLOSURE= (LAWS)
     tension: float = 1.0      # sigma_inf (ccx: tension at large clearance, node to surface)
     nlgeom: bool = False
     increment: tuple = (1.0, 1.0, 1e-5, 1.0)  # *STATIC: initial, period, minimum, maximum
@@ -142,9 +145,14 @@ def deck_text(model):
     if model.tie:
         lines += [f"*TIE, NAME={model.tie}", "SLAVE, MASTER"]
     else:
+        if model.law not in LAWS:
+            raise ValueError(f"pressure-overclosure law {model.law!r}: one of {LAWS}")
+        if model.law == "TIED" and not model.friction:
+            raise ValueError("a TIED law needs friction=(mu, lambda): lambda is its stick slope")
+        law_data = [model.penalty] + ([model.tension] if model.law == "LINEAR" else [])
         lines += ["*SURFACE INTERACTION, NAME=CONTACT",
-                  "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
-                  f"{fmt(model.penalty)}, {fmt(model.tension)}"]
+                  f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE={model.law}",
+                  ", ".join(fmt(v) for v in law_data)]
         if model.friction:
             lines += ["*FRICTION", ", ".join(fmt(v) for v in model.friction)]
         lines += [f"*CONTACT PAIR, INTERACTION=CONTACT, TYPE={model.contact_type}",

@@ -67,7 +67,7 @@ VARIANTS = {
 
 def stress_error(rows, load):
     """max |sigma - exact| over rows of 6 stress components (ccx order)."""
-    return float(np.max(np.abs(np.asarray(rows, float) - np.asarray(tied_patch.EXACT[load]))))
+    return float(np.max(np.abs(np.asarray(rows, float) - np.asarray(tied_patch.exact_stress(load)))))
 
 
 def kontakt_fields(result_dir, name):

@@ -125,6 +125,43 @@ TEST(CoulombFriction, AnOpenPointCarriesNoShearAndRelaxes) {
   EXPECT_NEAR(r.state.tangential.x(), 3e-3, 1e-15);
 }
 
+TEST(CoulombFriction, ATouchingPointNotYetStretchedSticksWithoutForce) {
+  // ccx's rule: a zero trial force sticks. Bodies that touch without pressure (the first
+  // iteration of a body held only by friction) get the stick stiffness, no force.
+  const CoulombLaw law{.mu = 0.2, .stick_slope = 1000};
+  const FrictionState start{.tangential = Vec3(1e-3, 0, 0), .slip = Vec3(1e-3, 0, 0)};
+  const Mat3 P = Mat3::Identity() - kNormal * kNormal.transpose();
+  for (Real fn : {0.0, -5.0}) {
+    const TangentialResponse r = at(law, start, Vec3::Zero(), fn);  // as it starts
+    EXPECT_EQ(r.force, Vec3::Zero()) << fn;
+    EXPECT_FALSE(r.slipping) << fn;
+    EXPECT_LT((r.d_force_d_s - 1000 * kArea * P).cwiseAbs().maxCoeff(), 1e-9) << fn;
+    EXPECT_EQ(r.state.slip, r.state.tangential) << fn;
+  }
+  // Once stretched it carries nothing and relaxes (AnOpenPointCarriesNoShearAndRelaxes).
+  EXPECT_EQ(at(law, start, Vec3(1e-4, 0, 0), 0).d_force_d_s, Mat3::Zero());
+}
+
+TEST(CoulombFriction, AStateFromAnEarlierNormalActsInTheCurrentTangentPlane) {
+  // The committed state was tangent to the normal of the last increment; the normal has turned
+  // since (a curved, deforming master). Stick and slip forces stay tangential, and the slip
+  // force is mu F_N in full.
+  const CoulombLaw law{.mu = 0.3, .stick_slope = 1000};
+  const Vec3 old_normal = Vec3(0.1, 0, 1).normalized();
+  const Vec3 t = Vec3(1, 0, 0) - Vec3(1, 0, 0).dot(old_normal) * old_normal;
+  const Real fn = 10;
+  for (Real size : {1e-4, 1e-2}) {  // stick, slip
+    const FrictionState start{.tangential = size * t, .slip = Vec3::Zero()};
+    const TangentialResponse r =
+        coulomb_response(law, start, Vec3::Zero(), Vec3::UnitZ(), kArea, fn);
+    EXPECT_NEAR(r.force.z(), 0, 1e-14) << size;
+    if (r.slipping) EXPECT_NEAR(r.force.norm(), 0.3 * fn, 1e-12);
+    else EXPECT_NEAR(r.force.x(), 1000 * kArea * size * t.x(), 1e-12);
+  }
+  EXPECT_TRUE(coulomb_response(law, {.tangential = 1e-2 * t}, Vec3::Zero(), Vec3::UnitZ(), kArea,
+                               fn).slipping);
+}
+
 TEST(CoulombFriction, TiedContactAlwaysSticksEvenInTension) {
   const CoulombLaw tied{.mu = std::numeric_limits<Real>::infinity(), .stick_slope = 1e6};
   for (Real fn : {-50.0, 0.0, 50.0}) {
