@@ -37,7 +37,8 @@ struct TangentialResponse {
 
 /// The tangential response of a point of area `area` pressed with the normal force
 /// `normal_force` (F_N = A p; a point that does not press carries no shear and relaxes its
-/// elastic stretch), from its state at the start of the increment.
+/// elastic stretch, with the stick tangent while it has none: ccx's zero trial force sticks),
+/// from its state at the start of the increment.
 TangentialResponse coulomb_response(const CoulombLaw& law, const FrictionState& start,
                                     const Vec3& s, const Vec3& normal, Real area,
                                     Real normal_force);

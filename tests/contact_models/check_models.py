@@ -14,6 +14,7 @@ import tempfile
 
 sys.dont_write_bytecode = True  # keep the source tree clean
 
+import drag_block  # noqa: E402
 import hertz  # noqa: E402
 import mesh_checks  # noqa: E402
 import patch  # noqa: E402
@@ -43,6 +44,7 @@ VARIANTS = {
     "patch_c3d15_c3d6": (lambda: patch.patch("C3D15", "C3D6", 3, 4, distortion=0.25), (STS, NTS)),
     "patch_c3d20_c3d10": (lambda: patch.patch("C3D20", "C3D10", 3, 2), (STS, NTS)),
     "hertz_c3d8": (lambda: hertz.hertz("C3D8", 1), (STS,)),
+    "drag_block": (lambda: drag_block.drag_block(), (STS, NTS)),
 }
 
 

@@ -1,6 +1,6 @@
-"""Two meshed bodies and one frictionless penalty contact pair (or a *TIE) between them,
-written as a ccx/Abaqus deck. The model classes (cube, punch, patch, hertz) fill a TwoBodyModel; this file
-knows nothing about any particular model.
+"""Two meshed bodies and one penalty contact pair (frictionless, with Coulomb friction or TIED)
+or a *TIE between them, written as a ccx/Abaqus deck. The model classes (cube, punch, patch,
+hertz, ...) fill a TwoBodyModel; this file knows nothing about any particular model.
 
 Numbering: the lower body's nodes and elements come first (ids 1..n), the upper body's
 follow (offset by the lower body's counts). Node and element sets are named BODY_SET, e.g.
@@ -9,11 +9,12 @@ elements form the element set LOWER / UPPER.
 
 Contact: `*SURFACE INTERACTION, NAME=CONTACT` with `*SURFACE BEHAVIOR,
 PRESSURE-OVERCLOSURE=LINEAR` (K, sigma_inf) or `=TIED` (K only: bonded, no slip limit, tension
-allowed; surface to surface only, and ccx requires a *FRICTION card for its stick slope) and one `*CONTACT PAIR, INTERACTION=CONTACT,
-TYPE=...` with the face-based surfaces SLAVE and MASTER (the boundary faces of one body whose
-corner nodes all lie in a node set). No SCHEME= parameter is written: ccx does not know it;
-kontakt gets the scheme from `--scheme`. With `tie` set, the bodies are bonded by `*TIE,
-NAME=tie` (slave SLAVE, master MASTER; ccx's MPC tie, default position tolerance) instead.
+allowed; surface to surface only, and ccx requires a *FRICTION card for its stick slope) and
+one `*CONTACT PAIR, INTERACTION=CONTACT, TYPE=...` with the face-based surfaces SLAVE and
+MASTER (the boundary faces of one body whose corner nodes all lie in a node set). No SCHEME=
+parameter is written: ccx does not know it; kontakt gets the scheme from `--scheme`. With `tie`
+set, the bodies are bonded by `*TIE, NAME=tie` (slave SLAVE, master MASTER; ccx's MPC tie,
+default position tolerance) instead.
 """
 import math
 import os

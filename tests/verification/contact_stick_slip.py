@@ -45,8 +45,8 @@ SLIP_TOLERANCE = 1e-5
 
 
 def increments(dat_path):
-    """[(time, |F| [3] (per direction) on the upper top, rows (p, q1, q2, t1, t2) of the active points)] of
-    every printed increment, in time order."""
+    """[(time, |F| per direction on the upper top, rows (p, q1, q2, t1, t2) of the active
+    points)] of every printed increment, in time order."""
     blocks = datfile.parse(dat_path)
     forces = {b.time: np.abs(np.sum([r[-3:] for r in b.rows], axis=0))
               for b in blocks if b.kind.startswith("forces")}

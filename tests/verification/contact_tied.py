@@ -119,8 +119,10 @@ def tie_cells(args, name, spec):
     """[kontakt *TIE, ccx *TIE] stress errors on the same load and meshes."""
     folder = os.path.join(args.work, name, "tie")
     os.makedirs(folder, exist_ok=True)
-    deck = tied_patch.tied_patch(**dict(spec, bond="tie")).write(os.path.join(folder, name + ".inp"))
-    run = solvers.run_kontakt(args.kontakt, deck, None, os.path.join(args.work, name, "kontakt_tie"))
+    model = tied_patch.tied_patch(**dict(spec, bond="tie"))
+    deck = model.write(os.path.join(folder, name + ".inp"))
+    run = solvers.run_kontakt(args.kontakt, deck, None,
+                              os.path.join(args.work, name, "kontakt_tie"))
     if run.converged:
         _, s_ip = tie_checks.kontakt_fields(run.result_dir, name)
         exact = np.asarray(tied_patch.exact_stress(spec["load"], spec.get("tau")))
