@@ -33,7 +33,7 @@ status, iterations, increments, wall time); the decks stay in WORK/VARIANT/pNNN/
                                                                    # meshes, nts gauss lgc7
   contact_stability.py --placements 20 --n 8      # ccx only (no --kontakt)
   contact_stability.py --kontakt EXE --variants punch_c3d8 cube_c3d8 --n 8 --schemes lgc7 \
-      --z -2e-4 0 1e-4 1e-3 1e-2                   # open gaps, touching, overlap (issue 9)
+      --z -0.0002 0 1e-4 1e-3 1e-2                # overlap (argparse: not -2e-4), touching, gaps
   contact_stability.py --kontakt EXE --variants punch_c3d8 --n 4 6 8 12 16 --schemes lgc7
   contact_stability.py --kontakt EXE --friction slip --schemes lgc7   # friction (issue 11)
 """
