@@ -136,6 +136,17 @@ def solve(deck_for, folder, column, kontakt=None, timeout=DEFAULT_TIMEOUT):
                        os.path.join(folder, "kontakt_" + column), timeout)
 
 
+def runs_per_slave(model_for, name, args):
+    """Yields (slave side, column label, Run) for every side in args.slave and every column:
+    kontakt's args.schemes, and ccx's two pair types with args.ccx. `model_for(slave,
+    contact_type)` builds the model; the decks go to ARGS.WORK/slave_SIDE/."""
+    for slave in args.slave:
+        folder = os.path.join(os.path.abspath(args.work), "slave_" + slave)
+        decks = {t: write_deck(model_for(slave, t), folder, t, name) for t in CCX_TYPES}
+        for label, column in columns(args.schemes, args.kontakt, CCX_TYPES if args.ccx else ()):
+            yield slave, label, solve(decks, folder, column, args.kontakt)
+
+
 def columns(schemes, kontakt, ccx_types=CCX_TYPES):
     """[(label, column)]: kontakt's schemes (when an executable is given), then ccx's types."""
     return ([(f"kontakt {s}", s) for s in (schemes if kontakt else [])]

@@ -68,26 +68,22 @@ def main():
     p.add_argument("--ccx", action="store_true", help="also ccx 2.20's two pair types")
     p.add_argument("--work", default="contact_friction_work")
     args = p.parse_args()
-    work = os.path.abspath(args.work)
     passed = failed = 0
-    for slave in args.slave:
-        folder = os.path.join(work, "slave_" + slave)
-        decks = {t: solvers.write_deck(sliding_block.sliding_block(slave=slave, contact_type=t),
-                                       folder, t, "block")
-                 for t in solvers.CCX_TYPES}
-        ccx_types = solvers.CCX_TYPES if args.ccx else ()
-        for label, column in solvers.columns(args.schemes, args.kontakt, ccx_types):
-            run = solvers.solve(decks, folder, column, args.kontakt)
-            if run.converged:
-                ok, detail = check_run(run, "block", sliding_block.MU)
-            else:
-                ok, detail = False, f"{run.status}: {run.message}"
-            if label.startswith("ccx"):
-                verdict = "reference"
-            else:
-                verdict = "PASS" if ok else "FAIL"
-                passed, failed = passed + ok, failed + (not ok)
-            print(f"slave {slave:5s} {label:24s} {verdict:9s} {run.iterations:4d} its  {detail}")
+
+    def model_for(slave, contact_type):
+        return sliding_block.sliding_block(slave=slave, contact_type=contact_type)
+
+    for slave, label, run in solvers.runs_per_slave(model_for, "block", args):
+        if run.converged:
+            ok, detail = check_run(run, "block", sliding_block.MU)
+        else:
+            ok, detail = False, f"{run.status}: {run.message}"
+        if label.startswith("ccx"):
+            verdict = "reference"
+        else:
+            verdict = "PASS" if ok else "FAIL"
+            passed, failed = passed + ok, failed + (not ok)
+        print(f"slave {slave:5s} {label:24s} {verdict:9s} {run.iterations:4d} its  {detail}")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1
 

@@ -127,25 +127,21 @@ def main():
     p.add_argument("--ccx", action="store_true", help="also ccx 2.20's two pair types")
     p.add_argument("--work", default="contact_stick_slip_work")
     args = p.parse_args()
-    work = os.path.abspath(args.work)
     passed = failed = 0
-    for slave in args.slave:
-        folder = os.path.join(work, "slave_" + slave)
-        decks = {t: solvers.write_deck(drag_block.drag_block(slave=slave, contact_type=t),
-                                       folder, t, "drag")
-                 for t in solvers.CCX_TYPES}
-        ccx_types = solvers.CCX_TYPES if args.ccx else ()
-        for label, column in solvers.columns(args.schemes, args.kontakt, ccx_types):
-            run = solvers.solve(decks, folder, column, args.kontakt)
-            checks = (evaluate(increments(os.path.join(run.result_dir, "drag.dat")))
-                      if run.converged else [("converges", False, f"{run.status}: {run.message}")])
-            reference = label.startswith("ccx")
-            for check, ok, detail in checks:
-                verdict = "reference" if reference else "PASS" if ok else "FAIL"
-                if not reference:
-                    passed, failed = passed + ok, failed + (not ok)
-                print(f"slave {slave:5s} {label:24s} {verdict:9s} {run.increments:3d} inc "
-                      f"{run.iterations:4d} its  {check}: {detail}")
+
+    def model_for(slave, contact_type):
+        return drag_block.drag_block(slave=slave, contact_type=contact_type)
+
+    for slave, label, run in solvers.runs_per_slave(model_for, "drag", args):
+        checks = (evaluate(increments(os.path.join(run.result_dir, "drag.dat")))
+                  if run.converged else [("converges", False, f"{run.status}: {run.message}")])
+        reference = label.startswith("ccx")
+        for check, ok, detail in checks:
+            verdict = "reference" if reference else "PASS" if ok else "FAIL"
+            if not reference:
+                passed, failed = passed + ok, failed + (not ok)
+            print(f"slave {slave:5s} {label:24s} {verdict:9s} {run.increments:3d} inc "
+                  f"{run.iterations:4d} its  {check}: {detail}")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1
 
