@@ -247,6 +247,12 @@ TEST_F(HandlerTest, ListFiltersAndPages) {
   EXPECT_TRUE(p2["next_page_token"].is_null());
   EXPECT_EQ(body(call("GET", "/v1/jobs", "", {}, {{"label", "odd=1"}}))["jobs"].size(), 2u);
   EXPECT_EQ(body(call("GET", "/v1/jobs", "", {}, {{"status", "running,failed"}}))["jobs"].size(), 0u);
+  // Keys a submission cannot carry are a 400 naming the parameter (a NUL was a 500).
+  for (const std::string& bad : {std::string("ko\0n=abc", 9), std::string("a\"b=1"), std::string("=1")}) {
+    const auto r = call("GET", "/v1/jobs", "", {}, {{"label", bad}});
+    EXPECT_EQ(r.status, 400);
+    EXPECT_EQ(body(r)["field"], "label");
+  }
 }
 
 TEST_F(HandlerTest, EventsTablesAndStream) {
