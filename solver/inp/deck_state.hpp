@@ -17,13 +17,14 @@
 
 namespace kontakt::inp {
 
-/// A set under construction: labels in the order given, each with the data line it came from.
+/// A set under construction: labels listed one by one, in the order given, each with the data
+/// line it came from (a listed label that does not exist is an error), and GENERATE ranges,
+/// whose labels without a node or element are skipped (ccx behaviour).
 struct RawSet {
   SourceLoc where;               ///< first card that defined it
   std::vector<int> labels;
-  /// Index into DeckState::line_locs, parallel to labels; -(id + 1) marks a label produced by
-  /// GENERATE, which is skipped when it does not exist (ccx behaviour) instead of an error.
-  std::vector<int> line_ids;
+  std::vector<int> line_ids;     ///< index into DeckState::line_locs, parallel to labels
+  std::vector<model::LabelRange> ranges;
 };
 
 struct RawFace {

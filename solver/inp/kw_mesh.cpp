@@ -4,6 +4,7 @@
 
 #include "inp/element_names.hpp"
 #include "inp/keyword_handlers.hpp"
+#include "inp/model_builder.hpp"
 #include "inp/record_access.hpp"
 
 namespace kontakt::inp {
@@ -26,16 +27,14 @@ void add_label(RawSet& set, int label, int line_id) {
 }
 
 /// GENERATE data: first, last[, increment].
-void add_generated(const Record& record, const DataLine& line, RawSet& set, int line_id) {
+void add_generated(const Record& record, const DataLine& line, RawSet& set) {
   require_field_count(record, line, 2, 3);
   const int first = int_field(record, line, 0);
   const int last = int_field(record, line, 1);
   const int step = line.fields.size() > 2 ? int_field(record, line, 2) : 1;
   if (step <= 0) fail(record, line, "GENERATE increment must be positive");
   if (last < first) fail(record, line, "GENERATE range ends before it starts");
-  // Ranges may span labels that do not exist (ccx tolerates them): mark the entries as
-  // generated (negative line id, see RawSet) so resolution skips missing ones.
-  for (int label = first; label <= last; label += step) add_label(set, label, -line_id - 1);
+  set.ranges.push_back(model::LabelRange{first, last, step});
 }
 
 /// Labels and names of other sets, mixed; a name means all members of that set.
@@ -59,6 +58,7 @@ void add_listed(const Record& record, const DataLine& line, std::map<std::string
     RawSet& set = sets[target];
     set.labels.insert(set.labels.end(), copy.labels.begin(), copy.labels.end());
     set.line_ids.insert(set.line_ids.end(), copy.line_ids.begin(), copy.line_ids.end());
+    set.ranges.insert(set.ranges.end(), copy.ranges.begin(), copy.ranges.end());
   }
 }
 
@@ -74,7 +74,7 @@ void handle_set(const Record& record, DeckState& state, std::map<std::string, Ra
   const bool generate = has_param(record, "GENERATE");
   for (const DataLine& line : record.lines) {
     const int line_id = state.intern(line.where);
-    if (generate) add_generated(record, line, sets[name], line_id);
+    if (generate) add_generated(record, line, sets[name]);
     else add_listed(record, line, sets, name, line_id);
   }
 }
@@ -186,22 +186,16 @@ int face_number(const Record& record, const DataLine& line, std::string_view pre
   return *n;
 }
 
-/// Labels of an element or node field: a label itself, or the members of a named set.
+/// Labels of an element or node field: a label itself, or the members of a named set (its
+/// GENERATE'd labels where `index` has them).
 std::vector<std::pair<int, int>> expand_field(const Record& record, const DataLine& line,
                                               const std::map<std::string, RawSet>& sets,
+                                              const std::unordered_map<int, int>& index,
                                               int line_id) {
   if (const std::optional<int> label = parse_int(line.fields[0])) return {{*label, line_id}};
   const auto set = sets.find(set_name(line.fields[0]));
   if (set == sets.end()) fail(record, line, "set " + set_name(line.fields[0]) + " is not defined");
-  std::vector<std::pair<int, int>> members;
-  for (std::size_t i = 0; i < set->second.labels.size(); ++i) {
-    members.emplace_back(set->second.labels[i], set->second.line_ids[i]);
-  }
-  std::sort(members.begin(), members.end());
-  members.erase(std::unique(members.begin(), members.end(),
-                            [](auto& a, auto& b) { return a.first == b.first; }),
-                members.end());
-  return members;
+  return set_labels(set->second, index);
 }
 
 }  // namespace
@@ -219,17 +213,17 @@ void handle_surface(const Record& record, DeckState& state) {
     const int line_id = state.intern(line.where);
     if (surface.kind == model::Surface::Kind::Nodes) {
       require_field_count(record, line, 1, 2);  // the optional weight is ignored
-      for (auto [label, id] : expand_field(record, line, state.node_sets, line_id)) {
-        if (id < 0 && !state.model.mesh.node_index.contains(label)) continue;
-        surface.node_labels.push_back(label);
+      for (const auto& labelled :
+           expand_field(record, line, state.node_sets, state.model.mesh.node_index, line_id)) {
+        surface.node_labels.push_back(labelled.first);
         surface.line_ids.push_back(line_id);
       }
     } else {
       require_field_count(record, line, 2, 2);
       const int face = face_number(record, line, "S");
-      for (auto [label, id] : expand_field(record, line, state.element_sets, line_id)) {
-        if (id < 0 && !state.model.mesh.element_index.contains(label)) continue;
-        surface.faces.push_back(RawFace{label, face, line_id});
+      for (const auto& labelled :
+           expand_field(record, line, state.element_sets, state.model.mesh.element_index, line_id)) {
+        surface.faces.push_back(RawFace{labelled.first, face, line_id});
       }
     }
   }

@@ -12,25 +12,12 @@ namespace kontakt::inp {
 namespace {
 
 /// Members of a raw set as indices via `index` (label -> internal), sorted by label.
-std::vector<int> set_members(const DeckState& state, const RawSet& set, const std::string& name,
-                             const std::unordered_map<int, int>& index, const char* what,
-                             const char* keyword) {
-  std::vector<std::pair<int, int>> labelled;  // (label, line id)
-  labelled.reserve(set.labels.size());
-  for (std::size_t i = 0; i < set.labels.size(); ++i) {
-    labelled.emplace_back(set.labels[i], set.line_ids[i]);
-  }
-  std::stable_sort(labelled.begin(), labelled.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+std::vector<int> set_members(const RawSet& set, const std::string& name,
+                             const DeckState& state, const std::unordered_map<int, int>& index,
+                             const char* what, const char* keyword) {
   std::vector<int> members;
-  members.reserve(labelled.size());
-  int previous = 0;
-  for (std::size_t i = 0; i < labelled.size(); ++i) {
-    const auto [label, line_id] = labelled[i];
-    if (i > 0 && label == previous) continue;
-    previous = label;
+  for (const auto& [label, line_id] : set_labels(set, index)) {
     const auto found = index.find(label);
-    if (found == index.end() && line_id < 0) continue;  // gap in a GENERATE range
     if (found == index.end()) {
       throw InputError(state.line_locs[static_cast<std::size_t>(line_id)], keyword,
                        std::string(what) + " " + std::to_string(label) + " of set " + name +
@@ -41,27 +28,57 @@ std::vector<int> set_members(const DeckState& state, const RawSet& set, const st
   return members;
 }
 
-/// GENERATE'd labels with no node, sorted and unique.
-std::vector<int> absent_generated_labels(const DeckState& state, const RawSet& set) {
-  std::vector<int> absent;
-  for (std::size_t i = 0; i < set.labels.size(); ++i)
-    if (set.line_ids[i] < 0 && !state.model.mesh.node_index.count(set.labels[i]))
-      absent.push_back(set.labels[i]);
-  std::sort(absent.begin(), absent.end());
-  absent.erase(std::unique(absent.begin(), absent.end()), absent.end());
-  return absent;
+/// Labels of `range` that `index` has, unsorted.
+std::vector<int> existing_labels(const model::LabelRange& range,
+                                 const std::unordered_map<int, int>& index) {
+  std::vector<int> labels;
+  if (range.count() <= static_cast<long long>(index.size())) {
+    for (long long label = range.first; label <= range.last; label += range.step)
+      if (index.contains(static_cast<int>(label))) labels.push_back(static_cast<int>(label));
+  } else {
+    for (const auto& entry : index)
+      if (range.contains(entry.first)) labels.push_back(entry.first);
+  }
+  return labels;
+}
+
+/// The GENERATE ranges of a node set that name labels without a node.
+std::vector<model::LabelRange> ranges_with_absent_labels(const DeckState& state,
+                                                         const RawSet& set) {
+  std::vector<model::LabelRange> ranges;
+  for (const model::LabelRange& range : set.ranges)
+    if (static_cast<long long>(existing_labels(range, state.model.mesh.node_index).size()) <
+        range.count())
+      ranges.push_back(range);
+  return ranges;
 }
 
 }  // namespace
 
+std::vector<std::pair<int, int>> set_labels(const RawSet& set,
+                                            const std::unordered_map<int, int>& index) {
+  std::vector<std::pair<int, int>> labelled;  // (label, line id)
+  labelled.reserve(set.labels.size());
+  for (std::size_t i = 0; i < set.labels.size(); ++i)
+    labelled.emplace_back(set.labels[i], set.line_ids[i]);
+  for (const model::LabelRange& range : set.ranges)
+    for (int label : existing_labels(range, index)) labelled.emplace_back(label, -1);
+  std::stable_sort(labelled.begin(), labelled.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  labelled.erase(std::unique(labelled.begin(), labelled.end(),
+                             [](const auto& a, const auto& b) { return a.first == b.first; }),
+                 labelled.end());
+  return labelled;
+}
+
 std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
                                   const std::string& name) {
-  return set_members(state, set, name, state.model.mesh.node_index, "node", "*NSET");
+  return set_members(set, name, state, state.model.mesh.node_index, "node", "*NSET");
 }
 
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
                                      const std::string& name) {
-  return set_members(state, set, name, state.model.mesh.element_index, "element", "*ELSET");
+  return set_members(set, name, state, state.model.mesh.element_index, "element", "*ELSET");
 }
 
 int node_index_of(const DeckState& state, const Record& record, const DataLine& line,
@@ -137,7 +154,8 @@ void resolve_connectivity(DeckState& state) {
 void build_sets(DeckState& state) {
   for (const auto& [name, set] : state.node_sets) {
     state.model.node_sets[name] =
-        model::NodeSet{name, node_set_members(state, set, name), absent_generated_labels(state, set)};
+        model::NodeSet{name, node_set_members(state, set, name),
+                       ranges_with_absent_labels(state, set)};
   }
   for (const auto& [name, set] : state.element_sets) {
     state.model.element_sets[name] =

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "inp/deck_state.hpp"
@@ -19,6 +21,12 @@ std::vector<int> resolve_node_field(const DeckState& state, const Record& record
 /// Likewise for an element label or element set.
 std::vector<int> resolve_element_field(const DeckState& state, const Record& record,
                                        const DataLine& line, std::size_t field);
+
+/// The labels of a raw set, each with the data line that listed it: every listed label, and
+/// the labels of its GENERATE ranges that `index` has (line -1), found by walking the range or
+/// the index, whichever is shorter. Sorted by label, one entry per label (its first listing).
+std::vector<std::pair<int, int>> set_labels(const RawSet& set,
+                                            const std::unordered_map<int, int>& index);
 
 /// Members of a set as internal indices, sorted by deck label and deduplicated; throws at the
 /// defining line of the first member that does not exist.

@@ -33,13 +33,25 @@ struct Mesh {
   std::unordered_map<int, int> element_index;  ///< label -> internal index
 };
 
+/// A GENERATE data line: first, first + step, ... up to last. Kept as a range, not expanded,
+/// because a range may name far more labels than the mesh has (ccx keeps them so too).
+struct LabelRange {
+  int first = 0;
+  int last = 0;
+  int step = 1;
+  long long count() const { return (static_cast<long long>(last) - first) / step + 1; }
+  bool contains(int label) const {
+    return label >= first && label <= last && (static_cast<long long>(label) - first) % step == 0;
+  }
+};
+
 /// Sets are stored sorted by deck label and free of duplicates (the order ccx prints them in).
 struct NodeSet {
   std::string name;               ///< upper case, as ccx prints it
   std::vector<int> nodes;         ///< internal indices
-  /// Labels a GENERATE range named that have no node. They carry no dof; ccx still prints
+  /// GENERATE ranges that name labels without a node. Those carry no dof; ccx still prints
   /// them in *NODE PRINT blocks (as zero rows), so the .dat writer does too.
-  std::vector<int> absent_labels{};
+  std::vector<LabelRange> ranges_with_absent_labels{};
 };
 struct ElementSet {
   std::string name;

@@ -33,6 +33,19 @@ std::string total_row(It begin, It end) {
   return s;
 }
 
+/// Labels the set's GENERATE ranges name that have no node, sorted and unique: as many as the
+/// rows the print asks for, so expanding them here costs no more than writing them.
+std::vector<int> absent_labels(const model::NodeSet& set,
+                               const std::unordered_map<int, int>& node_index) {
+  std::vector<int> absent;
+  for (const model::LabelRange& range : set.ranges_with_absent_labels)
+    for (long long label = range.first; label <= range.last; label += range.step)
+      if (!node_index.contains(static_cast<int>(label))) absent.push_back(static_cast<int>(label));
+  std::sort(absent.begin(), absent.end());
+  absent.erase(std::unique(absent.begin(), absent.end()), absent.end());
+  return absent;
+}
+
 bool output_due(int frequency, const Frame& frame) {
   if (frequency <= 0) return false;
   return frame.is_step_end || frame.increment % frequency == 0;
@@ -84,7 +97,7 @@ void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
   const auto& nodes = it->second.nodes;
   const auto& ids = model_.mesh.node_ids;
   // Labels a GENERATE range named without a node print as zero rows, in label order (ccx).
-  const auto& absent = it->second.absent_labels;
+  const std::vector<int> absent = absent_labels(it->second, model_.mesh.node_index);
   auto rows = [&](const MatX3& m) {
     KONTAKT_REQUIRE(m.rows() == model_.n_nodes(), "DatWriter: nodal array has wrong size");
     auto next_absent = absent.begin();

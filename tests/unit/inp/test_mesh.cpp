@@ -85,11 +85,40 @@ TEST(inpMesh, GenerateRangesSkipUndefinedLabelsLikeCcx) {
   EXPECT_EQ(m.node_sets.at("GAP").nodes.size(), 12u);
   EXPECT_EQ(m.element_sets.at("EGAP").elements.size(), 2u);
   EXPECT_EQ(m.surfaces.at("NS").nodes.size(), 12u);
-  // The labels without a node are kept aside: ccx prints them as zero rows.
-  const auto& absent = m.node_sets.at("GAP").absent_labels;
-  ASSERT_EQ(absent.size(), 88u);
-  EXPECT_EQ(absent.front(), 13);
-  EXPECT_EQ(absent.back(), 100);
+  // The range is kept for the print: ccx prints its labels without a node as zero rows.
+  const auto& ranges = m.node_sets.at("GAP").ranges_with_absent_labels;
+  ASSERT_EQ(ranges.size(), 1u);
+  EXPECT_EQ(ranges[0].first, 1);
+  EXPECT_EQ(ranges[0].last, 100);
+}
+
+TEST(inpMesh, AGenerateRangeCostsWhatTheMeshHasNotWhatItNames) {
+  // fuzz_deck_text's finding: a range of two billion labels used to be expanded label by label.
+  std::string deck = test::two_cubes_model();
+  deck += "*NSET, NSET=HUGE, GENERATE\n1, 2147483647, 1\n"
+          "*NSET, NSET=STRIDE, GENERATE\n3, 2147483647, 4\n"  // last label past INT_MAX - 4
+          "*ELSET, ELSET=EHUGE, GENERATE\n1, 2000000000\n"
+          "*NSET, NSET=BOTH\nHUGE, STRIDE\n"
+          "*SURFACE, NAME=NS, TYPE=NODE\nSTRIDE\n";
+  const Model m = read_deck_text(deck);
+  EXPECT_EQ(m.node_sets.at("HUGE").nodes.size(), 12u);
+  EXPECT_EQ(labels_of_nodes(m, m.node_sets.at("STRIDE").nodes), (std::vector<int>{3, 7, 11}));
+  EXPECT_EQ(m.node_sets.at("BOTH").nodes.size(), 12u);
+  EXPECT_EQ(m.element_sets.at("EHUGE").elements.size(), 2u);
+  EXPECT_EQ(m.surfaces.at("NS").nodes.size(), 3u);
+  EXPECT_EQ(m.node_sets.at("BOTH").ranges_with_absent_labels.size(), 2u);
+}
+
+TEST(inpMesh, AListedLabelWithoutANodeIsAnErrorEvenBesideARangeThatNamesIt) {
+  std::string deck = test::two_cubes_model();
+  deck += "*NSET, NSET=S, GENERATE\n1, 100\n*NSET, NSET=S\n99\n";
+  try {
+    read_deck_text(deck);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("node 99 of set S is not defined"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(inpMesh, SetsSortByLabelNotDefinitionOrder) {

@@ -214,7 +214,8 @@ TEST(DatWriter, MultiplePointsPerElementAndLargeLabels) {
 
 TEST(DatWriter, AbsentGeneratedLabelsPrintAsZeroRowsInLabelOrder) {
   auto m = test::two_tets();
-  m.node_sets["FIX"].absent_labels = {5, 15, 30};
+  // 10 and 20 are nodes of FIX, 15 is named twice: rows 5, 10, 15, 20, 30.
+  m.node_sets["FIX"].ranges_with_absent_labels = {{10, 30, 10}, {5, 15, 10}, {15, 15, 1}};
   auto& step = m.steps[0];
   step.prints = {node("FIX", {"U"})};
   const auto path = tmp("absent.dat");
