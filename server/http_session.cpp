@@ -16,7 +16,8 @@ namespace kontakt::server {
 
 namespace {
 
-constexpr auto kStreamPoll = std::chrono::milliseconds(20);  // an atomic read when idle
+/// An idle stream wakes at the store's next change; this is only the keep-alive check.
+constexpr auto kStreamRecheck = std::chrono::seconds(1);
 constexpr auto kStreamKeepAlive = std::chrono::seconds(15);
 constexpr int kEventsPerWrite = 500;
 constexpr std::size_t kMaxDrained = 16u << 20;  ///< bytes of a refused body read and dropped
@@ -144,6 +145,7 @@ void HttpSession::drain_and_close() {
 
 void HttpSession::do_close() {
   beast::error_code ec;
+  closed_ = true;
   timer_.cancel();
   stream_.socket().shutdown(net::ip::tcp::socket::shutdown_both, ec);
   stream_.close();
@@ -177,9 +179,20 @@ void HttpSession::poll_events() {
   // A replay longer than one batch goes on at once: no new commit will announce the rest.
   if (generation == seen_generation_ && !idle_too_long && !stream_behind_) {
     stream_.expires_never();
-    timer_.expires_after(kStreamPoll);
-    timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
-      if (!ec) self->poll_events();
+    if (!waiting_for_change_) {
+      waiting_for_change_ = true;
+      // The store wakes the stream from a committing thread: back onto the session's strand.
+      ctx_.store.on_next_change(generation, weak_from_this(), [weak = weak_from_this()] {
+        if (const auto self = weak.lock())
+          net::post(self->stream_.get_executor(), [self] {
+            self->waiting_for_change_ = false;
+            self->timer_.cancel();
+          });
+      });
+    }
+    timer_.expires_after(kStreamRecheck);
+    timer_.async_wait([self = shared_from_this()](beast::error_code) {
+      if (!self->closed_) self->poll_events();  // the recheck, or woken by a change
     });
     return;
   }

@@ -63,6 +63,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   std::int64_t stream_seq_ = 0;
   bool stream_follow_ = true;
   std::uint64_t seen_generation_ = 0;
+  bool waiting_for_change_ = false;  ///< registered with the store's on_next_change
+  bool closed_ = false;
   bool stream_behind_ = false;  ///< the last read hit kEventsPerWrite: more are stored already
   std::chrono::steady_clock::time_point last_write_;
   std::string frames_;

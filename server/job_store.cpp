@@ -197,7 +197,7 @@ std::pair<InsertResult, JobRecord> JobStore::insert_job(const NewJob& job) {
                json_text(json{{"event", "status"}, {"status", "queued"}}));
   auto record = select_job(writer_, "id", job.id);
   tx.commit();
-  ++generation_;
+  changed();
   return {InsertResult::Created, *record};
 }
 
@@ -274,7 +274,7 @@ std::optional<JobRecord> JobStore::claim_next() {
   transition(id, JobStatus::Running, "", "");
   auto record = select_job(writer_, "id", id);
   tx.commit();
-  ++generation_;
+  changed();
   return record;
 }
 
@@ -287,7 +287,7 @@ std::optional<JobRecord> JobStore::request_cancel(const std::string& id) {
   if (*status == JobStatus::Running) transition(id, JobStatus::Canceling, "", "");
   auto record = select_job(writer_, "id", id);
   tx.commit();
-  ++generation_;
+  changed();
   return record;
 }
 
@@ -311,7 +311,7 @@ bool JobStore::finish_job(const std::string& id, JobStatus to, const std::string
     st.bind(1, id).bind(2, a.name).bind(3, a.media_type).bind(4, a.size).bind(5, a.sha256).run();
   }
   tx.commit();
-  ++generation_;
+  changed();
   return true;
 }
 
@@ -322,7 +322,7 @@ bool JobStore::requeue(const std::string& id) {
   Statement st(writer_, "UPDATE jobs SET attempts = attempts - 1, started_ms = NULL WHERE id = ?");
   st.bind(1, id).run();
   tx.commit();
-  ++generation_;
+  changed();
   return true;
 }
 
@@ -333,7 +333,7 @@ bool JobStore::retry(const std::string& id, const std::string& message) {
   Statement st(writer_, "UPDATE jobs SET started_ms = NULL WHERE id = ?");
   st.bind(1, id).run();
   tx.commit();
-  ++generation_;
+  changed();
   return true;
 }
 
@@ -363,7 +363,7 @@ RecoveryReport JobStore::recover(int max_attempts) {
     }
   }
   tx.commit();
-  ++generation_;
+  changed();
   return report;
 }
 
@@ -376,7 +376,7 @@ JobStore::DeleteResult JobStore::delete_job(const std::string& id) {
   Statement st(writer_, "DELETE FROM jobs WHERE id = ?");
   st.bind(1, id).run();
   tx.commit();
-  ++generation_;
+  changed();
   return DeleteResult::Deleted;
 }
 
@@ -393,7 +393,7 @@ std::int64_t JobStore::append_event(const std::string& id, const std::string& ki
   else st.bind_null(2);
   st.bind(3, id).run();
   tx.commit();
-  ++generation_;
+  changed();
   return seq;
 }
 
@@ -472,6 +472,33 @@ std::vector<std::string> JobStore::all_ids() {
   std::vector<std::string> ids;
   while (st.step()) ids.push_back(st.text(0));
   return ids;
+}
+
+void JobStore::on_next_change(std::uint64_t seen, std::weak_ptr<void> owner,
+                              std::function<void()> wake) {
+  {
+    std::lock_guard lock(change_mutex_);
+    if (generation_.load() == seen) {
+      if (change_waiters_.size() >= prune_at_) {  // streams that closed while no job changed
+        std::erase_if(change_waiters_, [](const ChangeWaiter& w) { return w.owner.expired(); });
+        prune_at_ = std::max<std::size_t>(64, 2 * change_waiters_.size());
+      }
+      change_waiters_.push_back({std::move(owner), std::move(wake)});
+      return;
+    }
+  }
+  wake();
+}
+
+void JobStore::changed() {
+  std::vector<ChangeWaiter> waiters;
+  {
+    std::lock_guard lock(change_mutex_);
+    ++generation_;
+    waiters.swap(change_waiters_);
+  }
+  for (const ChangeWaiter& w : waiters)
+    if (!w.owner.expired()) w.wake();
 }
 
 }  // namespace kontakt::server

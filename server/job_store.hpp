@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -104,8 +105,11 @@ class JobStore {
   std::vector<double> run_durations();
   std::vector<std::string> all_ids();
 
-  /// Grows with every committed change: SSE streams poll it instead of the database.
+  /// Grows with every committed change: SSE streams look at it instead of the database.
   std::uint64_t generation() const { return generation_.load(); }
+  /// Calls `wake` once: from the thread that commits the next change, or at once when the
+  /// generation is already past `seen`. Dropped unheard when `owner` is gone by then.
+  void on_next_change(std::uint64_t seen, std::weak_ptr<void> owner, std::function<void()> wake);
 
  private:
   class ReadLease;
@@ -119,6 +123,15 @@ class JobStore {
   std::mutex readers_mutex_;
   std::vector<std::unique_ptr<SqliteDb>> idle_readers_;
   std::atomic<std::uint64_t> generation_{0};
+  /// After every commit: the generation grows and the waiters are woken.
+  void changed();
+  struct ChangeWaiter {
+    std::weak_ptr<void> owner;
+    std::function<void()> wake;
+  };
+  std::mutex change_mutex_;
+  std::vector<ChangeWaiter> change_waiters_;
+  std::size_t prune_at_ = 64;  ///< waiters whose owner is gone are dropped past this many
 };
 
 /// Milliseconds since the Unix epoch.

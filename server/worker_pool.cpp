@@ -24,10 +24,11 @@ WorkerPool::WorkerPool(JobStore& store, const JobFiles& files, WorkerSettings se
     : store_(store), files_(files), settings_(std::move(settings)) {}
 
 WorkerPool::~WorkerPool() {
-  if (!threads_.empty()) drain(std::chrono::milliseconds(0));
+  if (!threads_.empty() || spawner_.joinable()) drain(std::chrono::milliseconds(0));
 }
 
 void WorkerPool::start() {
+  spawner_ = std::thread([this] { spawner_loop(); });
   for (int i = 0; i < settings_.workers; ++i) threads_.emplace_back([this] { worker_loop(); });
 }
 
@@ -59,21 +60,51 @@ void WorkerPool::drain(std::chrono::milliseconds grace) {
   lock.unlock();
   for (auto& t : threads_) t.join();
   threads_.clear();
+  // Only now: the running jobs' processes die with the spawner's thread.
+  {
+    std::lock_guard guard(mutex_);
+    spawner_retired_ = true;
+  }
+  spawn_.notify_all();
+  if (spawner_.joinable()) spawner_.join();
+  waiting_.clear();  // killed and reaped
 }
 
-std::unique_ptr<WorkerProcess> WorkerPool::standby() const {
-  try {
-    return std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
-  } catch (const std::system_error& e) {  // out of processes or descriptors: try at the job
-    std::fprintf(stderr, "kontaktd: cannot start a job process: %s\n", e.what());
-    return nullptr;
+void WorkerPool::spawner_loop() {
+  const std::size_t keep = static_cast<std::size_t>(settings_.workers) + 1;
+  std::unique_lock lock(mutex_);
+  while (!spawner_retired_) {
+    if (waiting_.size() >= keep || stopping_) {
+      spawn_.wait(lock);
+      continue;
+    }
+    lock.unlock();
+    std::unique_ptr<WorkerProcess> process;
+    try {
+      process = std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
+    } catch (const std::system_error& e) {  // out of processes or descriptors: retry later
+      std::fprintf(stderr, "kontaktd: cannot start a job process: %s\n", e.what());
+    }
+    lock.lock();
+    if (process) waiting_.push_back(std::move(process));
+    else spawn_.wait_for(lock, kIdlePoll);
   }
 }
 
+std::unique_ptr<WorkerProcess> WorkerPool::take_process() {
+  {
+    std::lock_guard lock(mutex_);
+    while (!waiting_.empty()) {
+      std::unique_ptr<WorkerProcess> process = std::move(waiting_.back());
+      waiting_.pop_back();
+      spawn_.notify_one();
+      if (process->alive()) return process;  // else: killed while it waited
+    }
+  }
+  return std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
+}
+
 void WorkerPool::worker_loop() {
-  // This thread's next job process, loading while the thread waits. Each thread starts its
-  // own: a process dies with the thread that started it (PR_SET_PDEATHSIG).
-  std::unique_ptr<WorkerProcess> next = standby();
   while (true) {
     {
       std::unique_lock lock(mutex_);
@@ -94,12 +125,12 @@ void WorkerPool::worker_loop() {
         std::fprintf(stderr, "kontaktd: cannot claim a job: %s\n", e.what());
       }
       if (!job) break;
-      run(*job, next);
+      run(*job);
     }
   }
 }
 
-void WorkerPool::run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next) {
+void WorkerPool::run(const JobRecord& job) {
   const auto stop = std::make_shared<StopSignal>();
   {
     std::lock_guard lock(mutex_);
@@ -126,8 +157,8 @@ void WorkerPool::run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next)
                             .out_dir = work,
                             .job_name = fs::path(job.main_file).stem().string(),
                             .threads = settings_.threads_per_job};
-    std::unique_ptr<WorkerProcess> process = std::move(next);
-    if (!process || !process->start(args)) {  // none, or it died while it waited
+    std::unique_ptr<WorkerProcess> process = take_process();
+    if (!process->start(args)) {  // died between the check and now: a fresh one
       process = std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
       if (!process->start(args)) throw std::runtime_error("the job process ended before its job");
     }
@@ -142,7 +173,6 @@ void WorkerPool::run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next)
     running_.erase(job.id);
   }
   wake_.notify_all();  // drain() waits for running_ to empty
-  next = standby();    // loads while this job is concluded and the next one claimed
   if (!end) {
     std::fprintf(stderr, "kontaktd: job %s: cannot run its process: %s\n", job.id.c_str(),
                  start_error.c_str());

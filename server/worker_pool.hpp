@@ -1,6 +1,6 @@
 // The worker pool: N threads that claim queued jobs from the store. Each job runs in a worker
-// process of its own (job_worker.hpp) under the resource limits, started by its thread ahead
-// of need; the
+// process of its own (job_worker.hpp) under the resource limits; a spawner thread keeps N + 1
+// processes loaded and waiting, so a job does not wait for its process's libraries. The
 // thread relays the process's events into the store, stops it on cancel, at the wall-time
 // limit or on drain (job_supervisor.hpp), publishes its files and records the verdict
 // (job_outcome.hpp). A process that crashes fails its job, never the daemon. drain() stops
@@ -55,11 +55,12 @@ class WorkerPool final : public handlers::JobControl {
 
  private:
   void worker_loop();
-  /// Runs the job in `next` (a waiting process; a fresh one when it is gone) and leaves the
-  /// thread's next waiting process in it.
-  void run(const JobRecord& job, std::unique_ptr<WorkerProcess>& next);
-  /// A process waiting for a job, or nullptr when none can be started now.
-  std::unique_ptr<WorkerProcess> standby() const;
+  /// Starts processes while fewer than workers + 1 wait. The processes die with the thread
+  /// that started them (PR_SET_PDEATHSIG): this one outlives every job.
+  void spawner_loop();
+  /// A waiting process, or one started here (for this thread's job) when none waits.
+  std::unique_ptr<WorkerProcess> take_process();
+  void run(const JobRecord& job);
   /// Records the verdict: finish (publishing the files), requeue or retry.
   void conclude(const JobRecord& job, const JobVerdict& verdict, const JobSummary& summary);
 
@@ -71,7 +72,11 @@ class WorkerPool final : public handlers::JobControl {
   bool stopping_ = false;
   int pending_wakeups_ = 0;  ///< job_queued() calls not yet seen by a worker
   std::map<std::string, std::shared_ptr<StopSignal>> running_;
+  std::vector<std::unique_ptr<WorkerProcess>> waiting_;  ///< loaded, waiting for a job
+  std::condition_variable spawn_;   ///< a process was taken, or the spawner is retired
+  bool spawner_retired_ = false;    ///< set once every worker thread has ended
   std::vector<std::thread> threads_;
+  std::thread spawner_;
 };
 
 }  // namespace kontakt::server

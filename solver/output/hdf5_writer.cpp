@@ -308,6 +308,15 @@ bool file_output_due(const model::Step& step, const Frame& frame) {
   return due(step.node_files) || due(step.element_files) || due(step.contact_files);
 }
 
+void warm_up_hdf5() {
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "fapl");
+  check(H5Pset_fapl_core(fapl, 1 << 16, false), "core driver");  // no backing file
+  Handle file(H5Fcreate("warm-up", H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, "warm-up file");
+  attr_string(file, "created", rfc3339_now());
+  const std::vector<double> values(64, 1.0);
+  write_f64(file, "values", values.data(), {values.size()});
+}
+
 // ---------------------------------------------------------------- writer
 struct Hdf5Writer::Impl {
   hid_t file = -1;

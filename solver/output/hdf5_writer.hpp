@@ -35,6 +35,10 @@ std::set<std::string> requested_fields(const model::Model& model);
 /// step end). A step without file requests is due at every step end only.
 bool file_output_due(const model::Step& step, const Frame& frame);
 
+/// Initialises the HDF5 library and its deflate filter with a small file in memory: a process
+/// that waits for its job (kontaktd's standby worker) pays for them before the job, not in it.
+void warm_up_hdf5();
+
 class Hdf5Writer {
  public:
   /// Creates DIR/MODEL.hdf with /mesh, the /VTKHDF geometry, an empty history and no frames

@@ -65,7 +65,9 @@ class DeckTest(unittest.TestCase):
     def test_a_deck_check_past_the_memory_limit_is_a_422_not_a_dead_daemon(self):
         d = harness.Daemon(KONTAKTD, args=["--job-memory-limit", "256M"]).start()
         try:
-            status, _, problem = d.submit("*NSET, NSET=A, GENERATE\n1, 100000000\n")
+            # A million nodes: 13 MB of deck, about 330 MB to read.
+            deck = "*NODE\n" + "".join(f"{n},0,0,0\n" for n in range(1, 1_000_001))
+            status, _, problem = d.submit(deck)
             self.assertEqual(status, 422, problem)
             self.assertEqual(problem["code"], "deck_check_failed")
             self.assertIn("memory limit of 256 MiB", problem["detail"])

@@ -135,8 +135,10 @@ TEST_F(JobProcessTest, DeckCheckInAWorkerProcess) {
 }
 
 TEST_F(JobProcessTest, DeckCheckOverTheMemoryLimitFailsTheCheckNotTheCaller) {
-  // 10^8 generated labels: 800 MB of set members from a 40-byte deck.
-  const fs::path deck = write("huge.inp", "*NSET, NSET=A, GENERATE\n1, 100000000\n");
+  // A million nodes: 13 MB of deck, about 330 MB to read.
+  std::string text = "*NODE\n";
+  for (int node = 1; node <= 1'000'000; ++node) text += std::to_string(node) + ",0,0,0\n";
+  const fs::path deck = write("huge.inp", text);
   const auto r = process_deck_checker(kWorkerExe, {.memory_bytes = 256ull << 20}, 60s)(deck, {});
   ASSERT_TRUE(r.failure);
   EXPECT_NE(r.failure->find("memory limit of 256 MiB"), std::string::npos) << *r.failure;

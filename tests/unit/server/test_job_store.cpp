@@ -241,4 +241,23 @@ TEST(JobStoreSchema, RefusesADatabaseFromANewerBuild) {
   EXPECT_THROW(JobStore(dir.path() / "new.db"), StoreError);
 }
 
+TEST_F(JobStoreTest, AChangeWakesItsWaitersOnceAndOnlyThoseStillThere) {
+  const auto owner = std::make_shared<int>(0);
+  auto gone = std::make_shared<int>(0);
+  int woken = 0, woken_gone = 0, woken_late = 0;
+  store.on_next_change(store.generation(), owner, [&] { ++woken; });
+  store.on_next_change(store.generation(), std::weak_ptr<int>(gone), [&] { ++woken_gone; });
+  const std::uint64_t seen = store.generation();
+  EXPECT_EQ(woken, 0);
+  gone.reset();  // its stream closed before the change
+  store.insert_job(new_job("a"));
+  EXPECT_EQ(woken, 1);
+  EXPECT_EQ(woken_gone, 0);
+  store.insert_job(new_job("b"));
+  EXPECT_EQ(woken, 1);  // once: a stream waits again after it has read
+  // A waiter that saw an older generation missed a change already: woken at once.
+  store.on_next_change(seen, owner, [&] { ++woken_late; });
+  EXPECT_EQ(woken_late, 1);
+}
+
 }  // namespace kontakt::server
