@@ -251,8 +251,8 @@ void ContactSystem::build_points(Unit& unit, const VecX& u, const OldStates& old
                                        old.corners, xi);
   for (std::size_t k = 0; k < unit.points.size(); ++k) {
     Point& pt = unit.points[k];
-    pt.friction_start = unpack(moved.row(static_cast<Index>(unit.node >= 0 ? 0 : k)).transpose());
-    pt.committed.friction = pt.trial.friction = pt.friction_start;
+    pt.committed.friction = pt.trial.friction =
+        unpack(moved.row(static_cast<Index>(unit.node >= 0 ? 0 : k)).transpose());
   }
 }
 
@@ -490,8 +490,10 @@ void ContactSystem::add_point_friction(Unit& unit, const UnitGeometry& g, Point&
   const Vec3 moved = frozen_relative_position(g.slave.x, master_x, pt.frozen) - pt.frozen_relative;
   const Real area = s.active ? s.area : pt.frozen.area;
   const Real normal_force = s.active ? s.pressure * s.area : 0;
-  const TangentialResponse t = coulomb_response(*pairs_[unit.pair].friction, pt.friction_start,
-                                                moved, pt.frozen.normal, area, normal_force);
+  // The committed state is the one the increment started from: commit() comes at its end.
+  const TangentialResponse t =
+      coulomb_response(*pairs_[unit.pair].friction, pt.committed.friction, moved,
+                       pt.frozen.normal, area, normal_force);
   s.friction = t.state;
   s.shear = area > 0 ? Vec3(t.force / area) : Vec3::Zero();
   s.slipping = t.slipping;

@@ -186,7 +186,6 @@ class ContactSystem {
     int frozen_master = -1;
     Real frozen_gap = 0;        ///< geometric gap at begin_increment
     Vec3 frozen_relative = Vec3::Zero();  ///< x_s - x_m at begin_increment
-    FrictionState friction_start{};  ///< the state the increment starts from
     Real overlap0 = 0;          ///< initial overlap being ramped out (<= 0)
     Real closure = 0;           ///< tiny initial gap counted as closed (>= 0)
     PointState trial{}, committed{};

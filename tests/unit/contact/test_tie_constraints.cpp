@@ -8,6 +8,7 @@
 
 #include "assembly/dof_map.hpp"
 #include "contact/tie_constraints.hpp"
+#include "../inp/deck_fixtures.hpp"
 #include "contact_test_util.hpp"
 #include "inp/read_deck.hpp"
 #include "two_blocks.hpp"
@@ -350,36 +351,8 @@ TEST(ApplyTies, ConstrainedSlaveDofsAreLeftAsCcxDoes) {
 
 TEST(ApplyTies, NodesSharedWithTheMasterNeedNoConstraint) {
   // Two cubes sharing the face x = 1 (nodes 2, 3, 6, 7): both faces carry the same nodes.
-  const std::string deck = R"(*NODE
-1, 0, 0, 0
-2, 1, 0, 0
-3, 1, 1, 0
-4, 0, 1, 0
-5, 0, 0, 1
-6, 1, 0, 1
-7, 1, 1, 1
-8, 0, 1, 1
-9, 2, 0, 0
-10, 2, 1, 0
-11, 2, 0, 1
-12, 2, 1, 1
-*ELEMENT, TYPE=C3D8, ELSET=EALL
-1, 1, 2, 3, 4, 5, 6, 7, 8
-2, 2, 9, 10, 3, 6, 11, 12, 7
-*SURFACE, NAME=M
-1, S4
-*SURFACE, NAME=S
-2, S6
-*TIE, NAME=SHARED
-S, M
-*MATERIAL, NAME=STEEL
-*ELASTIC
-210000., 0.3
-*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
-*STEP
-*STATIC
-*END STEP
-)";
+  const std::string deck = inp::test::two_cubes_surfaces() +
+                           "*TIE, NAME=SHARED\nSLAVE, MASTER\n*STEP\n*STATIC\n*END STEP\n";
   model::Model m = inp::read_deck_text(deck, "shared.inp");
   EXPECT_EQ(apply_ties(m), 0);
   EXPECT_TRUE(m.equations.empty());
