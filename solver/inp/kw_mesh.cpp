@@ -1,6 +1,7 @@
 // *HEADING, *NODE, *ELEMENT, *NSET, *ELSET, *SURFACE.
 #include <algorithm>
 #include <cctype>
+#include <limits>
 
 #include "inp/element_names.hpp"
 #include "inp/keyword_handlers.hpp"
@@ -109,11 +110,20 @@ void handle_node(const Record& record, DeckState& state) {
   const std::optional<std::string> nset = name_value(record, "NSET");
   if (nset) open_set(state.node_sets, *nset, record.where);
   model::Mesh& mesh = state.model.mesh;
+  // ccx reads a node line by position: label, x, y, z; an empty coordinate is 0 and fields
+  // past the fourth are not read. It says nothing; we warn once per card when such a field
+  // holds something (planestress.inp has "0.75, 1.0, ,0.0": which z was meant?).
+  std::size_t ignored = 0;
+  const DataLine* first_ignored = nullptr;
   for (const DataLine& line : record.lines) {
-    require_field_count(record, line, 2, 4);
+    require_field_count(record, line, 2, std::numeric_limits<std::size_t>::max());
     const int label = int_field(record, line, 0);
-    const Vec3 xyz(real_field(record, line, 1), real_field_or(record, line, 2, 0),
+    const Vec3 xyz(real_field_or(record, line, 1, 0), real_field_or(record, line, 2, 0),
                    real_field_or(record, line, 3, 0));
+    if (std::any_of(line.fields.begin() + std::min<std::size_t>(4, line.fields.size()),
+                    line.fields.end(), [](const std::string& f) { return !f.empty(); })) {
+      if (ignored++ == 0) first_ignored = &line;
+    }
     const auto [it, inserted] = mesh.node_index.try_emplace(label, state.coords.size());
     if (inserted) {
       mesh.node_ids.push_back(label);
@@ -126,6 +136,10 @@ void handle_node(const Record& record, DeckState& state) {
     }
     if (nset) add_label(state.node_sets[*nset], label, state.intern(line.where));
   }
+  if (first_ignored)
+    state.warn(first_ignored->where, record.keyword,
+               std::to_string(ignored) + " line(s) with fields past x, y, z (first here): " +
+                   "not read, as ccx does not read them");
 }
 
 void handle_element(const Record& record, DeckState& state) {

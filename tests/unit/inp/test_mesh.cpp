@@ -77,6 +77,22 @@ TEST(inpMesh, SetsAreSortedDeduplicatedAndUpperCase) {
   EXPECT_EQ(m.element_sets.at("EGEN").elements.size(), 2u);
 }
 
+TEST(inpMesh, NodeLinesAreReadByPositionAsCcxReadsThem) {
+  // Empty coordinates are 0; fields past z are not read, with one warning per card naming
+  // the first such line (planestress.inp of the ccx suite has "21, 0.75, 1.0, ,0.0").
+  const std::string deck = "*NODE\n1, 1.5, 2.5, 3.5\n2, , 2.0\n3, 0.75, 1.0, ,0.0\n"
+                           "4, 1, 2, 3, 4, 5\n5, 1, 2, 3, , \n";
+  const Model m = read_deck_text(deck, "nodes.inp");
+  ASSERT_EQ(m.n_nodes(), 5);
+  EXPECT_EQ(m.mesh.coords.row(1), (Vec3(0, 2.0, 0)).transpose());
+  EXPECT_EQ(m.mesh.coords.row(2), (Vec3(0.75, 1.0, 0)).transpose());
+  EXPECT_EQ(m.mesh.coords.row(3), (Vec3(1, 2, 3)).transpose());
+  EXPECT_EQ(m.mesh.coords.row(4), (Vec3(1, 2, 3)).transpose());
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_EQ(m.warnings[0], "nodes.inp:4: *NODE: 2 line(s) with fields past x, y, z (first here): "
+                           "not read, as ccx does not read them");
+}
+
 TEST(inpMesh, GenerateRangesSkipUndefinedLabelsLikeCcx) {
   std::string deck = test::two_cubes_model();
   deck += "*NSET, NSET=GAP, GENERATE\n1, 100\n*ELSET, ELSET=EGAP, GENERATE\n1, 50\n"
