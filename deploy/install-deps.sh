@@ -15,6 +15,7 @@ PACKAGES=(
   python3 python3-numpy python3-h5py python3-yaml python3-jsonschema
   wrk curl
   time
+  systemd
   chromium
   calculix-ccx calculix-ccx-test calculix-ccx-doc
 )
