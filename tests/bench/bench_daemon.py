@@ -5,16 +5,16 @@
    until the job's terminal status) against `kontakt solve` of the same deck (process wall
    time). The daemon's overhead per job is submit-to-done minus the solver's own time (the
    `done` event's wall_time): the request, the deck check, the queue, the job's process (start,
-   libraries, exit), publishing and the event stream. With --baseline-kontaktd (a kontaktd
-   that runs jobs in its own threads, e.g. one built before issue 10) both are measured side by
-   side, alternating, in the same run;
+   libraries, exit), publishing and the event stream. With --baseline-kontaktd (another
+   build: one from before issue 10 ran jobs in its own threads; one from before a change to
+   measure) both are measured side by side, alternating, in the same run;
 2. throughput of N tiny jobs (default 200) with 2 workers, submitted from 4 threads;
 3. latency of GET /v1/jobs/{id} under load from a second process (wrk, 2 threads, 4 and
    16 connections, a few seconds each), with the p50/p99 wrk reports;
 4. cancel latency in the middle of a factorisation: a linear block (--cancel-dofs) is solved
    once to time its factorisation, then canceled half way through it; the latency is from the
-   cancel request to the job's terminal status event (with the baseline too, where the
-   factorisation ran to its end).
+   cancel request to the job's terminal status event (with the baseline too: a build that
+   runs jobs in threads lets the factorisation run to its end).
 
 Goals (issues 5 and 10): overhead under 50 ms per job, p99 status latency under 10 ms, cancel
 within the kill grace (default 2 s) however long the factorisation.
@@ -157,7 +157,7 @@ def main():
     p.add_argument("--jobs", type=int, default=200)
     p.add_argument("--runs", type=int, default=20, help="latency samples of each kind")
     p.add_argument("--wrk-seconds", type=int, default=10)
-    p.add_argument("--baseline-kontaktd", help="a kontaktd to compare the overhead with (in-thread jobs)")
+    p.add_argument("--baseline-kontaktd", help="another kontaktd build to compare with (e.g. an older commit's)")
     p.add_argument("--cancel-dofs", type=int, default=200000, help="size of the block canceled in part 4")
     p.add_argument("--smoke", action="store_true", help="small sizes, for CI")
     args = p.parse_args()
@@ -185,7 +185,7 @@ def main():
                 continue
             total = sorted(1e3 * t for t, _ in rows)
             overhead = sorted(1e3 * o for _, o in rows)
-            label = "jobs in processes (this build)" if name == "kontaktd" else "jobs in threads (baseline)"
+            label = "this build" if name == "kontaktd" else "baseline build"
             print(f"   daemon, {label}: submit-to-done {statistics.median(total):.1f} ms "
                   f"(p90 {total[int(0.9 * len(total))]:.1f} ms); overhead (all but the solver's own "
                   f"time) {statistics.median(overhead):.1f} ms median, {overhead[-1]:.1f} ms max "
@@ -206,11 +206,11 @@ def main():
         dofs, _ = make_block.write_block(block, "C3D8", args.cancel_dofs)
         with open(block) as f:
             block_deck = f.read()
-        for name, daemon in (("processes", d), ("threads (baseline)", baseline)):
+        for name, daemon in (("this build", d), ("the baseline build", baseline)):
             if daemon is None:
                 continue
             factorisation, remaining, latency, status = cancel_latency(daemon, block_deck)
-            print(f"4. cancel during the factorisation of a {dofs}-dof C3D8 block, jobs in {name}: "
+            print(f"4. cancel during the factorisation of a {dofs}-dof C3D8 block, {name}: "
                   f"{status} {latency:.2f} s after the request, with {remaining:.1f} s of its "
                   f"{factorisation:.1f} s solve to go")
     finally:
