@@ -28,16 +28,17 @@ class Verdict:
     reason: str        # a sentence saying why, with the figures
 
 
-def dominance(front, other):
+def dominance(front, other, error_tolerance=0.0):
     """Whether `front` dominates `other`: each run of `other` has a run in `front` that is no
-    slower and no less accurate (lower error at equal time, lower time at equal error). An
-    empty `other` (the other solver converged nowhere) is dominated by any non-empty front;
-    an empty `front` dominates nothing."""
+    slower and no less accurate (lower error at equal time, lower time at equal error); errors
+    within the relative `error_tolerance` of each other count as equal. An empty `other` (the
+    other solver converged nowhere) is dominated by any non-empty front; an empty `front`
+    dominates nothing."""
     if not front:
         return Verdict(False, list(other), [], "no converged run on this side")
     matched, unmatched = [], []
     for run in other:
-        match = [r for r in front if r[0] <= run[0] and r[1] <= run[1]]
+        match = [r for r in front if r[0] <= run[0] and r[1] <= run[1] * (1 + error_tolerance)]
         if match:
             matched.append((run, min(match)))
         else:

@@ -52,6 +52,12 @@ class Dominance(unittest.TestCase):
     def test_equal_run_is_matched(self):
         self.assertTrue(pareto.dominance([(1.0, 0.1)], [(1.0, 0.1)]).dominates)
 
+    def test_error_tolerance(self):
+        # within 1 % the errors are equal: the faster run matches; beyond it, it does not
+        self.assertFalse(pareto.dominance([(1.0, 0.01005)], [(2.0, 0.01)]).dominates)
+        self.assertTrue(pareto.dominance([(1.0, 0.01005)], [(2.0, 0.01)], 0.01).dominates)
+        self.assertFalse(pareto.dominance([(1.0, 0.0102)], [(2.0, 0.01)], 0.01).dominates)
+
     def test_empty_fronts(self):
         self.assertTrue(pareto.dominance([(1.0, 0.1)], []).dominates)
         self.assertFalse(pareto.dominance([], [(1.0, 0.1)]).dominates)
