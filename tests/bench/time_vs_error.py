@@ -223,13 +223,19 @@ def point(row):
     return (float(row["wall_s"]), max(float(row["error"]), ERROR_FLOOR) if row["error"] else None)
 
 
-def front_groups(rows):
-    """{front name: its rows' (time, error) points} of one problem."""
-    groups = {"kontakt (all schemes)": [r for r in rows if r["solver"] == "kontakt"],
-              "kontakt lgc7": [r for r in rows if r["solver"] == "kontakt" and r["scheme"] == "lgc7"]}
+def front_rows(rows):
+    """{front name: its rows} of one problem (fronts without rows left out)."""
+    ours = [r for r in rows if r["solver"] == "kontakt"]
+    groups = {"kontakt (all schemes)": ours,
+              "kontakt lgc7": [r for r in ours if r["scheme"] == "lgc7"]}
     groups.update({f"ccx {s}": [r for r in rows if r["solver"] == "ccx" and r["scheme"] == s]
                    for s in CCX_SCHEME.values()})
-    return {name: [point(r) for r in group] for name, group in groups.items() if group}
+    return {name: group for name, group in groups.items() if group}
+
+
+def front_groups(rows):
+    """{front name: its rows' (time, error) points} of one problem."""
+    return {name: [point(r) for r in group] for name, group in front_rows(rows).items()}
 
 
 def verdict_lines(problem, rows):
@@ -238,9 +244,7 @@ def verdict_lines(problem, rows):
     label = {point(r): f"{r['scheme']} {r['setting']}" for r in rows}
     lines = [f"{problem}:"]
     for name, front in fronts.items():
-        failed = sum(1 for r in rows if not r["error"] and
-                     (name.startswith("kontakt (all") and r["solver"] == "kontakt"
-                      or name == f"{r['solver']} {r['scheme']}"))
+        failed = sum(1 for r in front_rows(rows)[name] if not r["error"])
         runs = "; ".join(f"{label[p]} {p[0]:.3g} s {p[1]:.3g}" for p in front) or "empty"
         lines.append(f"  front {name}: {runs}" + (f" ({failed} runs without an error)"
                                                   if failed else ""))
@@ -345,7 +349,7 @@ def main():
     lines = []
     for problem in args.problems:
         mine = [r for r in rows if r["problem"] == problem]
-        if mine:
+        if mine and all(c in header for c in COLUMNS):
             lines += verdict_lines(problem, mine)
             plot(problem, mine, os.path.join(args.out, f"{problem}.png"))
     with open(os.path.join(args.out, "verdict.txt"), "w") as f:
