@@ -347,9 +347,9 @@ def main():
     if args.smoke and not failures:
         failures = smoke_failures(rows)
     lines = []
-    for problem in args.problems:
+    for problem in args.problems if all(c in header for c in COLUMNS) else ():
         mine = [r for r in rows if r["problem"] == problem]
-        if mine and all(c in header for c in COLUMNS):
+        if mine:
             lines += verdict_lines(problem, mine)
             plot(problem, mine, os.path.join(args.out, f"{problem}.png"))
     with open(os.path.join(args.out, "verdict.txt"), "w") as f:
