@@ -12,7 +12,7 @@ PACKAGES=(
   libzip-dev libssl-dev
   libgtest-dev
   clang-14 libclang-rt-14-dev llvm-14
-  python3 python3-numpy python3-h5py python3-yaml python3-jsonschema
+  python3 python3-numpy python3-h5py python3-yaml python3-jsonschema python3-matplotlib
   wrk curl
   time
   systemd

@@ -55,11 +55,15 @@ SMOKE_RATIO = 4
 AGREEMENT = 1e-2
 
 
+def sphere_load(run, name):
+    """The load on the whole Hertz sphere a run measured: 4 x the quarter's top reaction."""
+    blocks = datfile.parse(os.path.join(run.result_dir, name + ".dat"))
+    return 4 * abs(sum(row[3] for row in datfile.find(blocks, "forces").rows))
+
+
 def hertz_p0_error(run, name, nodal_path):
     """Peak nodal CPRESS against Hertz's p0 at the load the run measured (relative)."""
-    blocks = datfile.parse(os.path.join(run.result_dir, name + ".dat"))
-    load = 4 * abs(sum(row[3] for row in datfile.find(blocks, "forces").rows))
-    _, p0 = hertz_sphere.closed_form(load)
+    _, p0 = hertz_sphere.closed_form(sphere_load(run, name))
     peak = max(p for _, p in contact_fields.nodal_contact(nodal_path).values())
     return peak / p0 - 1
 

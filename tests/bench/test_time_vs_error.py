@@ -1,0 +1,115 @@
+"""Unit tests of the pure parts of time_vs_error.py: Pareto fronts and the dominance verdict
+(pareto.py), the headline error, the CSV completeness check and the smoke's convergence check.
+Run: /usr/bin/python3 -m unittest test_time_vs_error   (in this folder)"""
+import sys
+import unittest
+
+sys.dont_write_bytecode = True  # keep the source tree clean
+
+import pareto  # noqa: E402
+import time_vs_error  # noqa: E402
+
+
+class Front(unittest.TestCase):
+    def test_dominated_runs_leave_the_front(self):
+        runs = [(1.0, 0.5), (2.0, 0.1), (3.0, 0.2), (1.5, 0.6), (4.0, 0.05)]
+        self.assertEqual(pareto.pareto_front(runs), [(1.0, 0.5), (2.0, 0.1), (4.0, 0.05)])
+
+    def test_equal_time_keeps_the_lower_error_only(self):
+        self.assertEqual(pareto.pareto_front([(1.0, 0.3), (1.0, 0.2)]), [(1.0, 0.2)])
+        self.assertEqual(pareto.pareto_front([(2.0, 0.2), (1.0, 0.2)]), [(1.0, 0.2)])
+
+    def test_identical_runs_both_stay(self):
+        self.assertEqual(pareto.pareto_front([(1.0, 0.2), (1.0, 0.2), (3.0, 0.3)]),
+                         [(1.0, 0.2), (1.0, 0.2)])
+
+    def test_runs_without_error_never_enter_nor_beat(self):
+        # a fast run that did not converge must not remove the slower converged one
+        self.assertEqual(pareto.pareto_front([(0.1, None), (5.0, 0.4)]), [(5.0, 0.4)])
+        self.assertEqual(pareto.pareto_front([(0.1, None)]), [])
+
+    def test_sorted_by_time(self):
+        self.assertEqual(pareto.pareto_front([(3.0, 0.01), (1.0, 1.0), (2.0, 0.1)]),
+                         [(1.0, 1.0), (2.0, 0.1), (3.0, 0.01)])
+
+
+class Dominance(unittest.TestCase):
+    def test_every_run_matched(self):
+        v = pareto.dominance([(1.0, 0.1), (3.0, 0.01)], [(2.0, 0.1), (3.0, 0.02)])
+        self.assertTrue(v.dominates)
+        self.assertEqual(v.matched, [((2.0, 0.1), (1.0, 0.1)), ((3.0, 0.02), (3.0, 0.01))])
+
+    def test_one_run_faster_at_its_error_is_not_dominated(self):
+        v = pareto.dominance([(1.0, 0.1), (3.0, 0.01)], [(2.0, 0.05), (5.0, 0.1)])
+        self.assertFalse(v.dominates)
+        self.assertEqual(v.unmatched, [(2.0, 0.05)])
+        self.assertIn("1 of 2", v.reason)
+
+    def test_more_accurate_run_is_not_dominated(self):
+        v = pareto.dominance([(1.0, 0.1)], [(10.0, 0.001)])
+        self.assertFalse(v.dominates)
+
+    def test_equal_run_is_matched(self):
+        self.assertTrue(pareto.dominance([(1.0, 0.1)], [(1.0, 0.1)]).dominates)
+
+    def test_error_tolerance(self):
+        # within 1 % the errors are equal: the faster run matches; beyond it, it does not
+        self.assertFalse(pareto.dominance([(1.0, 0.01005)], [(2.0, 0.01)]).dominates)
+        self.assertTrue(pareto.dominance([(1.0, 0.01005)], [(2.0, 0.01)], 0.01).dominates)
+        self.assertFalse(pareto.dominance([(1.0, 0.0102)], [(2.0, 0.01)], 0.01).dominates)
+
+    def test_empty_fronts(self):
+        self.assertTrue(pareto.dominance([(1.0, 0.1)], []).dominates)
+        self.assertFalse(pareto.dominance([], [(1.0, 0.1)]).dominates)
+        self.assertFalse(pareto.dominance([], []).dominates)
+
+
+def row(problem="patch", solver="kontakt", scheme="lgc7", setting="random000",
+        status="converged", error="0.01"):
+    r = {c: "" for c in time_vs_error.COLUMNS}
+    r.update(problem=problem, solver=solver, scheme=scheme, setting=setting, status=status,
+             wall_s="1.0", error=error)
+    return r
+
+
+class Checks(unittest.TestCase):
+    def test_headline_is_the_largest_magnitude(self):
+        self.assertEqual(time_vs_error.headline(
+            "hertz_line", {"error_p0": 0.02, "error_p0_fit": -0.05, "error_radius": 0.01}), 0.05)
+        self.assertIsNone(time_vs_error.headline(
+            "patch", {"error_szz": 0.0, "error_cpress": float("inf")}))
+
+    def test_point_raises_errors_below_the_resolution(self):
+        self.assertEqual(time_vs_error.point(row(error="0")), (1.0, time_vs_error.ERROR_FLOOR))
+        self.assertEqual(time_vs_error.point(row(error="")), (1.0, None))
+
+    def test_complete_csv(self):
+        rows = [row(), row(solver="ccx", scheme="node-to-surface")]
+        keys = [("patch", "kontakt", "lgc7", "random000"),
+                ("patch", "ccx", "node-to-surface", "random000")]
+        self.assertEqual(time_vs_error.completeness(time_vs_error.COLUMNS, rows, keys), [])
+
+    def test_missing_column(self):
+        header = [c for c in time_vs_error.COLUMNS if c != "iterations"]
+        self.assertEqual(time_vs_error.completeness(header, [], []), ["column iterations missing"])
+
+    def test_missing_repeated_and_unexpected_rows(self):
+        keys = [("patch", "kontakt", "lgc7", "random000"), ("patch", "kontakt", "nts", "random000")]
+        found = time_vs_error.completeness(
+            time_vs_error.COLUMNS, [row(), row(), row(setting="random007")], keys)
+        self.assertEqual(sorted(found), sorted([
+            "no row for ('patch', 'kontakt', 'nts', 'random000')",
+            "2 rows for ('patch', 'kontakt', 'lgc7', 'random000')",
+            "unexpected row ('patch', 'kontakt', 'lgc7', 'random007')"]))
+
+    def test_smoke_flags_kontakt_runs_without_error(self):
+        rows = [row(), row(scheme="nts", status="not converged", error=""),
+                row(scheme="gc7", status="not measured", error=""),
+                row(solver="ccx", scheme="node-to-surface", status="not converged", error="")]
+        failures = time_vs_error.smoke_failures(rows)
+        self.assertEqual(len(failures), 2)
+        self.assertTrue(failures[0].startswith("patch random000 kontakt nts: not converged"))
+
+
+if __name__ == "__main__":
+    unittest.main()

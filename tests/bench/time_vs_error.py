@@ -1,0 +1,364 @@
+#!/usr/bin/python3
+"""Run time against error (issue 13, first slice): kontakt's contact schemes and ccx 2.20's two
+pair types on the same decks of problems with a known answer, one run each, one after the other;
+wall time, Newton iterations, peak memory and the errors of every run in DIR/time_vs_error.csv,
+one PNG per problem (error against wall time, each solver's Pareto front as a step line) and
+the per-problem dominance verdict in DIR/verdict.txt.
+
+Problems (`setting` is what varies along a problem's axis):
+  patch         seeded random contact patch tests (tests/verification/contact_patch.py's
+                random variants: element types, meshes, distortion, slave side, moduli; exact
+                sigma_zz = -1, CPRESS = 1); setting = the variant. error = max(error_szz,
+                error_cpress): max |sigma_zz + 1| over every printed integration point of
+                both bodies, max |nodal CPRESS - 1| over the nodes in contact (contact_patch's
+                measure).
+  hertz_sphere  3D Hertz: a quarter sphere on a block (tests/contact_models/hertz_sphere.py),
+                C3D8, setting = a/h at the contact. At the load the run measured (4 x the
+                quarter's top reaction): error_p0 = peak nodal CPRESS / p0 - 1 (bench_contact's
+                measure), error_p0_fit and error_radius = the fitted p0 and contact radius a of
+                p^2 = p0^2 (1 - r^2 / a^2) over the slave nodes (contact_hertz's fit) against
+                Hertz. error = the largest of the three magnitudes.
+  hertz_line    plane-strain Hertz line contact (tests/contact_models/hertz.py), setting =
+                element and mesh level; error_p0, error_p0_fit, error_radius (the half-width b)
+                as contact_hertz.py measures them; error = the largest magnitude.
+A run that does not converge, or whose results cannot be measured, is a row with its status (and
+message) and no error; it never enters a front.
+
+Pareto front of a solver: its runs (all schemes and settings of the problem) that no other of
+its runs beats in both wall time and error. Fronts: kontakt (all schemes), kontakt lgc7, ccx
+node-to-surface, ccx surface-to-surface. Verdict: kontakt's front (all, and lgc7) dominates a
+ccx front when every run on the ccx front has a kontakt run on the front that is no slower and
+no less accurate (tests/bench/pareto.py).
+
+  time_vs_error.py --kontakt build/solver/app/kontakt --out DIR      # the full study
+  time_vs_error.py --kontakt ... --out DIR --smoke                   # CI size, checked
+
+--smoke: patch 2 variants, sphere a/h 4, line Hertz level 1 (C3D8), schemes nts gc7 lgc7 and
+ccx's two types; exit code 1 when the CSV lacks a column or a row per (problem, solver, scheme,
+setting), or a kontakt run did not converge with a measured error. Without --smoke only the
+CSV's completeness is checked.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+from dataclasses import dataclass
+
+sys.dont_write_bytecode = True  # keep the source tree clean
+
+import numpy as np  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "contact_models"))
+sys.path.insert(0, os.path.join(HERE, "..", "verification"))
+import bench_contact  # noqa: E402
+import contact_fields  # noqa: E402
+import contact_hertz  # noqa: E402
+import contact_patch  # noqa: E402
+import hertz  # noqa: E402
+import hertz_sphere  # noqa: E402
+import pareto  # noqa: E402
+import patch  # noqa: E402
+import solvers  # noqa: E402
+
+COLUMNS = ["problem", "solver", "scheme", "setting", "status", "wall_s", "iterations",
+           "increments", "peak_mb", "error", "error_szz", "error_cpress", "error_p0",
+           "error_p0_fit", "error_radius", "message"]
+KEY = ("problem", "solver", "scheme", "setting")
+# the error components whose largest magnitude is a problem's headline error
+HEADLINE = {"patch": ("error_szz", "error_cpress"),
+            "hertz_sphere": ("error_p0", "error_p0_fit", "error_radius"),
+            "hertz_line": ("error_p0", "error_p0_fit", "error_radius")}
+CCX_SCHEME = {"NODE TO SURFACE": "node-to-surface", "SURFACE TO SURFACE": "surface-to-surface"}
+FULL = dict(patch=6, ratios=[4, 6, 8, 12], line_elements=["C3D8", "C3D20"], line_levels=[1, 2, 3],
+            schemes=list(solvers.SCHEMES))
+SMOKE = dict(patch=2, ratios=[4], line_elements=["C3D8"], line_levels=[1],
+             schemes=["nts", "gc7", "lgc7"])
+DEFAULT_SEED = 2031  # not one the schemes were tuned on (contact_patch.py's default is 9)
+# errors below the resolution of the printed results (ccx's .frd: 6 digits, E12.5) cannot be
+# told apart: fronts, verdicts and plots take them as equal to it
+ERROR_FLOOR = 1e-5
+# errors within 1 % of each other are equal for the verdict: the measures (six printed digits,
+# a fit over a few nodes) do not resolve finer, and a 4th-digit difference is no finding
+ERROR_TOLERANCE = 0.01
+
+
+@dataclass
+class Case:
+    problem: str
+    setting: str
+    model: object      # two_body.TwoBodyModel
+    name: str          # the deck's name
+    measure: object    # (Run) -> {error component: value}
+
+
+def patch_errors(run):
+    stress, pressure = contact_patch.errors(contact_patch.measure(run.result_dir, "patch"))
+    return {"error_szz": stress, "error_cpress": pressure}
+
+
+def sphere_errors(model, run):
+    """error_p0 (peak nodal CPRESS), error_p0_fit, error_radius of a Hertz sphere run, each
+    against Hertz at the load the run measured."""
+    load = bench_contact.sphere_load(run, "sphere")
+    a, p0 = hertz_sphere.closed_form(load)
+    nodal = contact_fields.nodal_contact(contact_fields.result_file(run.result_dir, "sphere"))
+    offset = model.node_offset("UPPER")
+    pairs = [(math.hypot(*model.upper.mesh.nodes[n - offset][:2]), nodal[n][1])
+             for n in model.node_set("UPPER", "ZMIN") if n in nodal]
+    radii, pressures = zip(*pairs)
+    p0_fit, a_fit = contact_hertz.fit(radii, pressures)
+    return {"error_p0": max(pressures) / p0 - 1, "error_p0_fit": p0_fit / p0 - 1,
+            "error_radius": a_fit / a - 1}
+
+
+def line_errors(model, level, run):
+    e = contact_hertz.relative_errors(contact_hertz.measure(model, level, run.result_dir, "hertz"))
+    return {"error_p0": e["peak"], "error_p0_fit": e["p0_fit"], "error_radius": e["b_fit"]}
+
+
+def cases(size, seed):
+    """Every Case of a study size (FULL or SMOKE, possibly overridden)."""
+    out = []
+    for name, kwargs in contact_patch.random_variants(size["patch"], seed):
+        out.append(Case("patch", name, patch.patch(**kwargs), "patch", patch_errors))
+    for ratio in size["ratios"]:
+        model = hertz_sphere.hertz_sphere(ratio=ratio)
+        out.append(Case("hertz_sphere", f"C3D8 a/h {ratio:g}", model, "sphere",
+                        lambda run, m=model: sphere_errors(m, run)))
+    for element in size["line_elements"]:
+        for level in size["line_levels"]:
+            model = hertz.hertz(element, level)
+            out.append(Case("hertz_line", f"{element} level {level}", model, "hertz",
+                            lambda run, m=model, k=level: line_errors(m, k, run)))
+    return out
+
+
+def headline(problem, components):
+    """The problem's headline error: the largest magnitude of its components (None when one is
+    not finite, e.g. a run without nodal results)."""
+    values = [abs(components[k]) for k in HEADLINE[problem]]
+    return max(values) if all(math.isfinite(v) for v in values) else None
+
+
+def row_of(case, solver, scheme, run):
+    """The CSV row of one run: measured when it converged."""
+    row = dict(problem=case.problem, solver=solver, scheme=scheme, setting=case.setting,
+               status=run.status, wall_s=f"{run.wall:.3f}", iterations=run.iterations,
+               increments=run.increments, peak_mb=f"{run.peak_mib:.1f}", message=run.message)
+    if run.converged:
+        try:
+            components = case.measure(run)
+        except (OSError, KeyError, ValueError, TypeError) as e:
+            row.update(status="not measured", message=str(e))
+            return row
+        row.update({k: f"{v:.6g}" for k, v in components.items()})
+        error = headline(case.problem, components)
+        if error is None:
+            row.update(status="not measured", message="an error component is not finite")
+        else:
+            row["error"] = f"{error:.6g}"
+    return row
+
+
+def run_all(all_cases, args, csv_path):
+    """Solves every case with every column, writing each row as soon as it is measured."""
+    ccx_types = () if args.no_ccx else solvers.CCX_TYPES
+    with open(csv_path, "w", newline="") as f:
+        writer = csv.DictWriter(f, COLUMNS)
+        writer.writeheader()
+        for case in all_cases:
+            folder = os.path.join(args.out, "runs", case.problem, case.setting.replace(" ", "_")
+                                  .replace("/", ""))
+            decks = {t: solvers.write_deck(case.model, folder, t, case.name)
+                     for t in solvers.CCX_TYPES}
+            for _, column in solvers.columns(args.schemes, args.kontakt, ccx_types):
+                solver, scheme = (("ccx", CCX_SCHEME[column]) if column in solvers.CCX_TYPES
+                                  else ("kontakt", column))
+                run = solvers.solve(decks, folder, column, args.kontakt, args.timeout)
+                row = row_of(case, solver, scheme, run)
+                writer.writerow(row)
+                f.flush()
+                print(f"{case.problem:13s} {case.setting:16s} {solver:8s} {scheme:19s} "
+                      f"{row['status']:14s} {run.wall:8.2f} s {run.iterations:4d} it "
+                      f"{run.peak_mib:7.1f} MiB  error {row.get('error', '-')}", flush=True)
+
+
+def expected_keys(all_cases, schemes, kontakt, ccx):
+    """The (problem, solver, scheme, setting) of every run the study makes."""
+    ccx_types = solvers.CCX_TYPES if ccx else ()
+    out = []
+    for case in all_cases:
+        for _, column in solvers.columns(schemes, kontakt, ccx_types):
+            solver, scheme = (("ccx", CCX_SCHEME[column]) if column in solvers.CCX_TYPES
+                              else ("kontakt", column))
+            out.append((case.problem, solver, scheme, case.setting))
+    return out
+
+
+def completeness(header, rows, expected):
+    """Problems of a written CSV: missing columns, missing or repeated rows (a list of
+    sentences, empty when complete)."""
+    problems = [f"column {c} missing" for c in COLUMNS if c not in header]
+    if problems:
+        return problems
+    found = [tuple(r[k] for k in KEY) for r in rows]
+    problems += [f"no row for {k}" for k in expected if k not in found]
+    problems += [f"{found.count(k)} rows for {k}" for k in set(found) if found.count(k) > 1]
+    problems += [f"unexpected row {k}" for k in set(found) if k not in expected]
+    return problems
+
+
+def smoke_failures(rows):
+    """Kontakt rows of a smoke run that did not converge with a measured error."""
+    return [f"{r['problem']} {r['setting']} kontakt {r['scheme']}: {r['status']} "
+            f"{r['message']}".strip()
+            for r in rows if r["solver"] == "kontakt" and (r["status"] != "converged"
+                                                         or not r["error"])]
+
+
+def point(row):
+    """(wall time, error raised to ERROR_FLOOR, or None without an error) of a CSV row."""
+    return (float(row["wall_s"]), max(float(row["error"]), ERROR_FLOOR) if row["error"] else None)
+
+
+def front_rows(rows):
+    """{front name: its rows} of one problem (fronts without rows left out)."""
+    ours = [r for r in rows if r["solver"] == "kontakt"]
+    groups = {"kontakt (all schemes)": ours,
+              "kontakt lgc7": [r for r in ours if r["scheme"] == "lgc7"]}
+    groups.update({f"ccx {s}": [r for r in rows if r["solver"] == "ccx" and r["scheme"] == s]
+                   for s in CCX_SCHEME.values()})
+    return {name: group for name, group in groups.items() if group}
+
+
+def front_groups(rows):
+    """{front name: its rows' (time, error) points} of one problem."""
+    return {name: [point(r) for r in group] for name, group in front_rows(rows).items()}
+
+
+def verdict_lines(problem, rows):
+    """The dominance verdict of one problem and the fronts behind it, as text lines."""
+    fronts = {name: pareto.pareto_front(points) for name, points in front_groups(rows).items()}
+    label = {point(r): f"{r['scheme']} {r['setting']}" for r in rows}
+    lines = [f"{problem}:"]
+    for name, front in fronts.items():
+        failed = sum(1 for r in front_rows(rows)[name] if not r["error"])
+        runs = "; ".join(f"{label[p]} {p[0]:.3g} s {p[1]:.3g}" for p in front) or "empty"
+        lines.append(f"  front {name}: {runs}" + (f" ({failed} runs without an error)"
+                                                  if failed else ""))
+    for ours in ("kontakt (all schemes)", "kontakt lgc7"):
+        for theirs in (f"ccx {s}" for s in CCX_SCHEME.values()):
+            if ours in fronts and theirs in fronts:
+                v = pareto.dominance(fronts[ours], fronts[theirs], ERROR_TOLERANCE)
+                lines.append(f"  {ours} dominates {theirs}: {'yes' if v.dominates else 'NO'} "
+                             f"({v.reason})")
+    return lines
+
+
+def plot(problem, rows, path):
+    """Error (log) against wall time (log): a marker per solver and scheme, each front a step
+    line."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(8, 6))
+    series = sorted({(r["solver"], r["scheme"]) for r in rows}, key=lambda s: (s[0] == "ccx", s))
+    markers = "os^vD<>pP*Xhd"
+    colours = plt.cm.tab20(np.linspace(0, 1, max(len(series), 2)))
+    for k, (solver, scheme) in enumerate(series):
+        points = [point(r) for r in rows if (r["solver"], r["scheme"]) == (solver, scheme)]
+        done = [(t, e) for t, e in points if e is not None]
+        failed = len(points) - len(done)
+        tag = f"{solver} {scheme}" + (f" ({failed} without error)" if failed else "")
+        colour = "black" if solver == "ccx" else colours[k]
+        if done:
+            ax.scatter(*zip(*done), marker=markers[k % len(markers)], color=colour, label=tag,
+                       zorder=3)
+        else:
+            ax.scatter([], [], marker=markers[k % len(markers)], color=colour, label=tag)
+    styles = {"kontakt (all schemes)": ("tab:blue", "-", 3.0),
+              "kontakt lgc7": ("tab:green", ":", 2.0),
+              "ccx node-to-surface": ("tab:red", "--", 1.2),
+              "ccx surface-to-surface": ("tab:red", "-", 1.2)}  # kontakt's wider: visible under
+    right = 1.2 * max(float(r["wall_s"]) for r in rows)
+    for name, points in front_groups(rows).items():
+        front = pareto.pareto_front(points)
+        if front:  # the last run's error holds to the right edge: a lone run is a line too
+            colour, style, width = styles[name]
+            ax.step(*zip(*front, (right, front[-1][1])), where="post", color=colour,
+                    linestyle=style, linewidth=width, label=f"front: {name}")
+    ax.set_xlim(right=right)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time [s]")
+    ax.set_ylabel(f"{problem} error ({' / '.join(HEADLINE[problem])}, largest magnitude)")
+    ax.set_title(f"{problem}: error against wall time (errors below {ERROR_FLOOR:g} taken as it)",
+                 fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    solvers.add_solver_options(p, FULL["schemes"])
+    p.add_argument("--out", required=True, help="folder of the CSV, PNGs, verdict and runs")
+    p.add_argument("--smoke", action="store_true", help="CI size, checked (see above)")
+    p.add_argument("--problems", nargs="+", choices=tuple(HEADLINE), default=list(HEADLINE))
+    p.add_argument("--patch", type=int, help="patch: number of random variants (6)")
+    p.add_argument("--seed", type=int, default=DEFAULT_SEED, help="of the patch variants")
+    p.add_argument("--ratios", nargs="+", type=float, help="sphere: a/h levels (4 6 8 12)")
+    p.add_argument("--line-elements", nargs="+", choices=("C3D8", "C3D20"),
+                   help="line Hertz: element types (C3D8 C3D20)")
+    p.add_argument("--line-levels", nargs="+", type=int, choices=(1, 2, 3),
+                   help="line Hertz: mesh levels (1 2 3)")
+    p.add_argument("--no-ccx", action="store_true", help="kontakt's schemes only")
+    p.add_argument("--timeout", type=int, default=solvers.DEFAULT_TIMEOUT, help="per run, s")
+    p.add_argument("--replot", action="store_true",
+                   help="solve nothing: checks, plots and verdict of OUT's CSV (same options)")
+    args = p.parse_args()
+    size = dict(SMOKE if args.smoke else FULL)
+    for key in ("patch", "ratios", "line_elements", "line_levels"):
+        if getattr(args, key) is not None:
+            size[key] = getattr(args, key)
+    if args.smoke and "--schemes" not in sys.argv:
+        args.schemes = SMOKE["schemes"]
+    args.out = os.path.abspath(args.out)
+    os.makedirs(args.out, exist_ok=True)
+    all_cases = [c for c in cases(size, args.seed) if c.problem in args.problems]
+    csv_path = os.path.join(args.out, "time_vs_error.csv")
+    print(f"one run at a time, 1 thread each, nice {solvers.NICENESS}; patch seed {args.seed}")
+    for c in all_cases:
+        if c.problem == "patch":
+            print(f"  {c.setting}: {c.model.notes[0].split(': ', 1)[1]}")
+    if not args.replot:
+        run_all(all_cases, args, csv_path)
+
+    with open(csv_path, newline="") as f:
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        header = reader.fieldnames or []
+    failures = completeness(header, rows, expected_keys(all_cases, args.schemes, args.kontakt,
+                                                        not args.no_ccx))
+    if args.smoke and not failures:
+        failures = smoke_failures(rows)
+    lines = []
+    for problem in args.problems if all(c in header for c in COLUMNS) else ():
+        mine = [r for r in rows if r["problem"] == problem]
+        if mine:
+            lines += verdict_lines(problem, mine)
+            plot(problem, mine, os.path.join(args.out, f"{problem}.png"))
+    with open(os.path.join(args.out, "verdict.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    for failure in failures:
+        print(f"FAIL: {failure}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
