@@ -214,8 +214,9 @@ TEST(DatWriter, MultiplePointsPerElementAndLargeLabels) {
 
 TEST(DatWriter, AbsentGeneratedLabelsPrintAsZeroRowsInLabelOrder) {
   auto m = test::two_tets();
-  // 10 and 20 are nodes of FIX, 15 is named twice: rows 5, 10, 15, 20, 30.
-  m.node_sets["FIX"].ranges_with_absent_labels = {{10, 30, 10}, {5, 15, 10}, {15, 15, 1}};
+  // 10 and 20 are FIX's nodes (and the only ones the ranges name), 15 is named twice:
+  // rows 5, 10, 15, 20, 25, 55, 65.
+  m.node_sets["FIX"].ranges_with_absent_labels = {{55, 65, 10}, {5, 25, 5}, {15, 15, 1}};
   auto& step = m.steps[0];
   step.prints = {node("FIX", {"U"})};
   const auto path = tmp("absent.dat");
@@ -228,7 +229,7 @@ TEST(DatWriter, AbsentGeneratedLabelsPrintAsZeroRowsInLabelOrder) {
                            "        10  1.000000E-03 -5.000000E-01  0.000000E+00\n"
                            "        15" + zero +
                            "        20  2.000000E-03 -1.000000E+00  0.000000E+00\n"
-                           "        30" + zero;
+                           "        25" + zero + "        55" + zero + "        65" + zero;
   EXPECT_NE(slurp(path).find(rows), std::string::npos) << slurp(path);
 }
 
