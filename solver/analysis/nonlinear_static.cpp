@@ -382,7 +382,7 @@ class NonlinearStatic {
   nonlinear::Verdict judged_by_contact(const StepContext& sc, const VecX& u) {
     nonlinear::Verdict converged;
     converged.kind = nonlinear::Verdict::Kind::Converged;
-    if (contact_.empty()) return converged;
+    if (contact_.empty() || !options_.drift_check) return converged;
     const contact::Acceptance acceptance = contact_.accept(u);
     const bool redo_allowed =
         !sc.step->procedure.direct &&

@@ -24,6 +24,9 @@ struct NonlinearOptions {
   /// Overrides every step's *CONTROLS when set (tests, expert use).
   std::optional<model::SolutionControls> controls;
   ContactStabilisation contact_stabilisation = ContactStabilisation::Auto;
+  /// Whether a linear variant's increment whose frozen gaps drifted from fresh projections is
+  /// redone smaller (contact/README.md); off only to measure what the check costs and saves.
+  bool drift_check = true;
 };
 
 /// Solves every step. Throws NonConvergence when an increment cannot be completed (after the

@@ -16,7 +16,7 @@ namespace {
 void print_usage(std::FILE* out) {
   std::fputs(
       "usage: kontakt solve MODEL.inp [-o DIR] [--scheme NAME] [--threads N] [--quiet]\n"
-      "                     [--contact-stabilisation auto|always|never]\n"
+      "                     [--contact-stabilisation auto|always|never] [--drift-check on|off]\n"
       "       kontakt submit|status|logs|wait|cancel|fetch|list ...   (a kontaktd daemon)\n"
       "       kontakt --version\n"
       "\n"
@@ -27,6 +27,8 @@ void print_usage(std::FILE* out) {
       "  --scheme NAME  contact scheme of every pair (nts, gauss, lgauss, gc1..gc12, lgc1..lgc12)\n"
       "  --contact-stabilisation MODE  springs that hold bodies only contact holds: auto (when\n"
       "               an increment needs them), always, never; released before an increment ends\n"
+      "  --drift-check on|off  redo a linear variant's increment smaller when its frozen gaps\n"
+      "               drift from fresh projections (default on; off to measure what it does)\n"
       "  exit codes: 0 converged, 2 input error, 3 not converged or cancelled (converged\n"
       "  increments kept), 4 numerical/internal error\n"
       "\n",

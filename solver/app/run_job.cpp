@@ -60,6 +60,7 @@ void solve(const model::Model& model, const RunRequest& request, ResultWriters& 
       options.contact_stabilisation =
           contact_stabilisation_from_name(request.contact_stabilisation)
               .value_or(analysis::ContactStabilisation::Auto);
+      options.drift_check = request.drift_check;
       analysis::run_nonlinear_static(model, options, writers, events);
     } else {
       analysis::run_linear_static(model, {.threads = request.threads, .cancel = &cancel}, writers,

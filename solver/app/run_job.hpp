@@ -24,6 +24,8 @@ struct RunRequest {
   std::optional<std::string> scheme;
   /// Contact stabilisation: "auto" (default), "always" or "never".
   std::string contact_stabilisation = "auto";
+  /// The linear variants' drift check (analysis::NonlinearOptions::drift_check).
+  bool drift_check = true;
 };
 
 enum class RunStatus { Converged, NotConverged, InputError, Cancelled, Error };

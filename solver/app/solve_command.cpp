@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -29,6 +30,7 @@ struct SolveArgs {
   bool quiet = false;
   std::optional<std::string> scheme;
   std::string contact_stabilisation = "auto";
+  bool drift_check = true;
 };
 
 /// Parses `solve` arguments; returns false (after printing why) on a usage error.
@@ -73,6 +75,14 @@ bool parse_solve_args(int argc, char** argv, SolveArgs& args) {
         return false;
       }
       args.contact_stabilisation = v;
+    } else if (a == "--drift-check") {
+      const char* v = value("--drift-check");
+      if (!v) return false;
+      if (std::strcmp(v, "on") != 0 && std::strcmp(v, "off") != 0) {
+        std::fprintf(stderr, "kontakt: --drift-check takes on or off\n");
+        return false;
+      }
+      args.drift_check = !std::strcmp(v, "on");
     } else if (a == "--quiet" || a == "-q") {
       args.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -106,7 +116,8 @@ int solve_command(int argc, char** argv) {
                                      .job_name = args.deck.stem().string(),
                                      .threads = args.threads,
                                      .scheme = args.scheme,
-                                     .contact_stabilisation = args.contact_stabilisation},
+                                     .contact_stabilisation = args.contact_stabilisation,
+                                     .drift_check = args.drift_check},
                                     progress, g_cancel);
   if (result.status != RunStatus::Converged)
     std::fprintf(stderr, "kontakt: error: %s\n", result.message.c_str());

@@ -111,5 +111,48 @@ class Checks(unittest.TestCase):
         self.assertTrue(failures[0].startswith("patch random000 kontakt nts: not converged"))
 
 
+class PenaltyStudy(unittest.TestCase):
+    def test_cases_carry_the_penalty_of_their_setting(self):
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[],
+                    penalties=[1, 1e4], penalty_ratio=4, increments=[])
+        study = time_vs_error.cases(size, seed=1)
+        self.assertEqual([c.setting for c in study], ["K a/E* 1", "K a/E* 10000"])
+        e_star, a = time_vs_error.hertz_sphere.E_STAR, time_vs_error.hertz_sphere.TARGET_RADIUS
+        for case, r in zip(study, (1, 1e4)):
+            self.assertEqual(case.problem, "hertz_penalty")
+            self.assertAlmostEqual(case.model.penalty, r * e_star / a)
+        # the mesh is the a/h asked for, not the default sphere's
+        default = time_vs_error.hertz_sphere.hertz_sphere(ratio=4)
+        self.assertEqual(len(study[0].model.upper.mesh.nodes), len(default.upper.mesh.nodes))
+        self.assertNotEqual(study[0].model.penalty, default.penalty)
+
+
+class IncrementStudy(unittest.TestCase):
+    def setUp(self):
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
+                    increments=[1, 3], increment_ratio=4)
+        self.study = time_vs_error.cases(size, seed=1)
+
+    def test_each_increment_count_with_and_without_the_drift_check(self):
+        self.assertEqual([c.setting for c in self.study],
+                         ["1 increments", "1 increments, drift check off",
+                          "3 increments", "3 increments, drift check off"])
+        for case, n in zip(self.study, (1, 1, 3, 3)):
+            self.assertEqual(case.model.increment[0], 1.0 / n)  # initial = largest increment
+            self.assertEqual(case.model.increment[3], 1.0 / n)
+        self.assertEqual(self.study[0].kontakt_args, ())
+        self.assertEqual(self.study[1].kontakt_args, ("--drift-check", "off"))
+
+    def test_drift_check_off_runs_only_the_linear_variants(self):
+        schemes = ["nts", "gc7", "lgc7", "lgauss"]
+        on = time_vs_error.case_columns(self.study[0], schemes, "kontakt", ("NODE TO SURFACE",))
+        off = time_vs_error.case_columns(self.study[1], schemes, "kontakt", ("NODE TO SURFACE",))
+        self.assertEqual([s for _, s, _ in on], schemes + ["node-to-surface"])
+        self.assertEqual(off, [("kontakt", "lgc7", "lgc7"), ("kontakt", "lgauss", "lgauss")])
+        # the completeness check expects exactly these rows
+        expected = time_vs_error.expected_keys(self.study[:2], schemes, "kontakt", ccx=True)
+        self.assertEqual(len(expected), 4 + 2 + 2)  # 4 schemes and 2 ccx types, then 2 linear
+
+
 if __name__ == "__main__":
     unittest.main()

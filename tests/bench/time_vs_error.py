@@ -18,6 +18,18 @@ Problems (`setting` is what varies along a problem's axis):
                 measure), error_p0_fit and error_radius = the fitted p0 and contact radius a of
                 p^2 = p0^2 (1 - r^2 / a^2) over the slave nodes (contact_hertz's fit) against
                 Hertz. error = the largest of the three magnitudes.
+  hertz_penalty the penalty study: the Hertz sphere at one a/h (--penalty-ratio, 6) with the
+                penalty K = r E* / a for r = K a / E* in --penalties (1 10 100 1e3 1e4; the
+                other problems use 200), setting = that r; errors as hertz_sphere. Besides
+                the front plot, hertz_penalty_study.png: error and Newton iterations against
+                K a / E* per scheme.
+  hertz_increments  the increment study: the Hertz sphere at one a/h (--increment-ratio, 6) with
+                K a/E* = 10 (where the penalty study finds surface-to-surface accurate; at 200
+                its pressure oscillates and hides the increment's effect) in N equal
+                increments for N in --increments (1 2 3 6 12), setting = N; the
+                linear variants also with the drift check off (kontakt --drift-check off,
+                setting "N increments, drift check off"; ccx and the other schemes are not
+                rerun there). Besides the front plot, hertz_increments_study.png.
   hertz_line    plane-strain Hertz line contact (tests/contact_models/hertz.py), setting =
                 element and mesh level; error_p0, error_p0_fit, error_radius (the half-width b)
                 as contact_hertz.py measures them; error = the largest magnitude.
@@ -33,13 +45,15 @@ no less accurate (tests/bench/pareto.py).
   time_vs_error.py --kontakt build/solver/app/kontakt --out DIR      # the full study
   time_vs_error.py --kontakt ... --out DIR --smoke                   # CI size, checked
 
---smoke: patch 2 variants, sphere a/h 4, line Hertz level 1 (C3D8), schemes nts gc7 lgc7 and
+--smoke: patch 2 variants, sphere a/h 4, the penalty study at K a/E* 10 and the increment study
+at 1 increment (drift check on and off) on a/h 4, line Hertz level 1 (C3D8), schemes nts gc7 lgc7 and
 ccx's two types; exit code 1 when the CSV lacks a column or a row per (problem, solver, scheme,
 setting), or a kontakt run did not converge with a measured error. Without --smoke only the
 CSV's completeness is checked.
 """
 import argparse
 import csv
+import dataclasses
 import math
 import os
 import sys
@@ -69,12 +83,17 @@ KEY = ("problem", "solver", "scheme", "setting")
 # the error components whose largest magnitude is a problem's headline error
 HEADLINE = {"patch": ("error_szz", "error_cpress"),
             "hertz_sphere": ("error_p0", "error_p0_fit", "error_radius"),
+            "hertz_penalty": ("error_p0", "error_p0_fit", "error_radius"),
+            "hertz_increments": ("error_p0", "error_p0_fit", "error_radius"),
             "hertz_line": ("error_p0", "error_p0_fit", "error_radius")}
 CCX_SCHEME = {"NODE TO SURFACE": "node-to-surface", "SURFACE TO SURFACE": "surface-to-surface"}
 FULL = dict(patch=6, ratios=[4, 6, 8, 12], line_elements=["C3D8", "C3D20"], line_levels=[1, 2, 3],
-            schemes=list(solvers.SCHEMES))
-SMOKE = dict(patch=2, ratios=[4], line_elements=["C3D8"], line_levels=[1],
-             schemes=["nts", "gc7", "lgc7"])
+            penalties=[1, 10, 100, 1000, 10000], penalty_ratio=6, increments=[1, 2, 3, 6, 12],
+            increment_ratio=6, schemes=list(solvers.SCHEMES))
+SMOKE = dict(patch=2, ratios=[4], line_elements=["C3D8"], line_levels=[1], penalties=[10],
+             penalty_ratio=4, increments=[1], increment_ratio=4, schemes=["nts", "gc7", "lgc7"])
+DRIFT_OFF = ("--drift-check", "off")
+INCREMENT_STUDY_PENALTY = 10  # K a / E*
 DEFAULT_SEED = 2031  # not one the schemes were tuned on (contact_patch.py's default is 9)
 # errors below the resolution of the printed results (ccx's .frd: 6 digits, E12.5) cannot be
 # told apart: fronts, verdicts and plots take them as equal to it
@@ -91,6 +110,20 @@ class Case:
     model: object      # two_body.TwoBodyModel
     name: str          # the deck's name
     measure: object    # (Run) -> {error component: value}
+    kontakt_args: tuple = ()     # options of every kontakt run of the case
+    linear_variants_only: bool = False  # only kontakt's linear variants run (no ccx)
+
+
+def case_columns(case, schemes, kontakt, ccx_types):
+    """[(solver, scheme, column)] of the runs a case makes."""
+    out = []
+    for _, column in solvers.columns(schemes, kontakt, () if case.linear_variants_only
+                                     else ccx_types):
+        if column in solvers.CCX_TYPES:
+            out.append(("ccx", CCX_SCHEME[column], column))
+        elif not case.linear_variants_only or column.startswith("l"):
+            out.append(("kontakt", column, column))
+    return out
 
 
 def patch_errors(run):
@@ -127,6 +160,19 @@ def cases(size, seed):
         model = hertz_sphere.hertz_sphere(ratio=ratio)
         out.append(Case("hertz_sphere", f"C3D8 a/h {ratio:g}", model, "sphere",
                         lambda run, m=model: sphere_errors(m, run)))
+    for r in size["penalties"]:
+        model = dataclasses.replace(hertz_sphere.hertz_sphere(ratio=size["penalty_ratio"]),
+                                    penalty=r * hertz_sphere.E_STAR / hertz_sphere.TARGET_RADIUS)
+        out.append(Case("hertz_penalty", f"K a/E* {r:g}", model, "sphere",
+                        lambda run, m=model: sphere_errors(m, run)))
+    for n in size["increments"]:
+        model = dataclasses.replace(
+            hertz_sphere.hertz_sphere(ratio=size["increment_ratio"], increments=n),
+            penalty=INCREMENT_STUDY_PENALTY * hertz_sphere.E_STAR / hertz_sphere.TARGET_RADIUS)
+        measure = (lambda run, m=model: sphere_errors(m, run))
+        out.append(Case("hertz_increments", f"{n} increments", model, "sphere", measure))
+        out.append(Case("hertz_increments", f"{n} increments, drift check off", model, "sphere",
+                        measure, kontakt_args=DRIFT_OFF, linear_variants_only=True))
     for element in size["line_elements"]:
         for level in size["line_levels"]:
             model = hertz.hertz(element, level)
@@ -170,13 +216,12 @@ def run_all(all_cases, args, csv_path):
         writer.writeheader()
         for case in all_cases:
             folder = os.path.join(args.out, "runs", case.problem, case.setting.replace(" ", "_")
-                                  .replace("/", ""))
+                                  .replace("/", "").replace(",", ""))
             decks = {t: solvers.write_deck(case.model, folder, t, case.name)
                      for t in solvers.CCX_TYPES}
-            for _, column in solvers.columns(args.schemes, args.kontakt, ccx_types):
-                solver, scheme = (("ccx", CCX_SCHEME[column]) if column in solvers.CCX_TYPES
-                                  else ("kontakt", column))
-                run = solvers.solve(decks, folder, column, args.kontakt, args.timeout)
+            for solver, scheme, column in case_columns(case, args.schemes, args.kontakt, ccx_types):
+                run = solvers.solve(decks, folder, column, args.kontakt, args.timeout,
+                                    case.kontakt_args)
                 row = row_of(case, solver, scheme, run)
                 writer.writerow(row)
                 f.flush()
@@ -189,12 +234,8 @@ def expected_keys(all_cases, schemes, kontakt, ccx):
     """The (problem, solver, scheme, setting) of every run the study makes."""
     ccx_types = solvers.CCX_TYPES if ccx else ()
     out = []
-    for case in all_cases:
-        for _, column in solvers.columns(schemes, kontakt, ccx_types):
-            solver, scheme = (("ccx", CCX_SCHEME[column]) if column in solvers.CCX_TYPES
-                              else ("kontakt", column))
-            out.append((case.problem, solver, scheme, case.setting))
-    return out
+    return [(case.problem, solver, scheme, case.setting) for case in all_cases
+            for solver, scheme, _ in case_columns(case, schemes, kontakt, ccx_types)]
 
 
 def completeness(header, rows, expected):
@@ -303,6 +344,54 @@ def plot(problem, rows, path):
     plt.close(fig)
 
 
+STUDIES = {  # problem: (x of a row's setting, x label, plot title)
+    "hertz_penalty": (lambda setting: float(setting.split()[-1]), "penalty K a / E*",
+                      "Hertz sphere: the penalty study"),
+    "hertz_increments": (lambda setting: float(setting.split()[0]), "equal increments per step",
+                         "Hertz sphere: the increment study"),
+}
+
+
+def study_series(row):
+    """The line of a study plot a row belongs to."""
+    off = ", drift check off" if "drift check off" in row["setting"] else ""
+    return f"{row['solver']} {row['scheme']}{off}"
+
+
+def plot_study(problem, rows, path):
+    """Error and Newton iterations (all attempts) against the study's parameter, a line per
+    solver and scheme (dashed: ccx; dotted: kontakt without the drift check)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    x_of, x_label, title = STUDIES[problem]
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+    for series in sorted({study_series(r) for r in rows}, key=lambda s: (s.startswith("ccx"), s)):
+        mine = sorted(((x_of(r["setting"]), r) for r in rows if study_series(r) == series),
+                      key=lambda pair: pair[0])
+        style = dict(marker="o", label=series,
+                     linestyle="--" if series.startswith("ccx") else ":" if "off" in series
+                     else "-")
+        measured = [(x, max(float(r["error"]), ERROR_FLOOR)) for x, r in mine if r["error"]]
+        if measured:
+            top.plot(*zip(*measured), **style)
+        converged = [(x, int(r["iterations"])) for x, r in mine if r["status"] == "converged"]
+        if converged:
+            bottom.plot(*zip(*converged), **style)
+    top.set_xscale("log")
+    top.set_yscale("log")
+    top.set_ylabel("error (p0, fitted p0, radius: largest magnitude)")
+    bottom.set_ylabel("Newton iterations (converged runs, all attempts)")
+    bottom.set_xlabel(x_label)
+    top.set_title(title, fontsize=9)
+    for ax in (top, bottom):
+        ax.grid(True, which="both", alpha=0.3)
+    top.legend(fontsize=6, loc="best", ncol=2)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     solvers.add_solver_options(p, FULL["schemes"])
@@ -312,6 +401,12 @@ def main():
     p.add_argument("--patch", type=int, help="patch: number of random variants (6)")
     p.add_argument("--seed", type=int, default=DEFAULT_SEED, help="of the patch variants")
     p.add_argument("--ratios", nargs="+", type=float, help="sphere: a/h levels (4 6 8 12)")
+    p.add_argument("--penalties", nargs="+", type=float,
+                   help="penalty study: K a / E* values (1 10 100 1000 10000)")
+    p.add_argument("--penalty-ratio", type=float, help="penalty study: the sphere's a/h (6)")
+    p.add_argument("--increments", nargs="+", type=int,
+                   help="increment study: numbers of equal increments (1 2 3 6 12)")
+    p.add_argument("--increment-ratio", type=float, help="increment study: the sphere's a/h (6)")
     p.add_argument("--line-elements", nargs="+", choices=("C3D8", "C3D20"),
                    help="line Hertz: element types (C3D8 C3D20)")
     p.add_argument("--line-levels", nargs="+", type=int, choices=(1, 2, 3),
@@ -322,7 +417,8 @@ def main():
                    help="solve nothing: checks, plots and verdict of OUT's CSV (same options)")
     args = p.parse_args()
     size = dict(SMOKE if args.smoke else FULL)
-    for key in ("patch", "ratios", "line_elements", "line_levels"):
+    for key in ("patch", "ratios", "line_elements", "line_levels", "penalties", "penalty_ratio",
+                "increments", "increment_ratio"):
         if getattr(args, key) is not None:
             size[key] = getattr(args, key)
     if args.smoke and "--schemes" not in sys.argv:
@@ -352,6 +448,8 @@ def main():
         if mine:
             lines += verdict_lines(problem, mine)
             plot(problem, mine, os.path.join(args.out, f"{problem}.png"))
+            if problem in STUDIES:
+                plot_study(problem, mine, os.path.join(args.out, f"{problem}_study.png"))
     with open(os.path.join(args.out, "verdict.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -126,14 +126,16 @@ def write_deck(model, folder, contact_type, name="model"):
     return model.with_contact_type(contact_type).write(os.path.join(deck_dir, name + ".inp"))
 
 
-def solve(deck_for, folder, column, kontakt=None, timeout=DEFAULT_TIMEOUT):
-    """Run of one column: `column` is a kontakt scheme (needs `kontakt`, the executable) or a
-    ccx pair type (CCX_TYPES); `deck_for` maps a pair type to its deck (write_deck). ccx solves
-    in the deck's folder; kontakt writes into FOLDER/kontakt_SCHEME/."""
+def solve(deck_for, folder, column, kontakt=None, timeout=DEFAULT_TIMEOUT, kontakt_args=()):
+    """Run of one column: `column` is a kontakt scheme (needs `kontakt`, the executable, run
+    with the options `kontakt_args`) or a ccx pair type (CCX_TYPES); `deck_for` maps a pair
+    type to its deck (write_deck). ccx solves in the deck's folder; kontakt writes into
+    FOLDER/kontakt_SCHEME/."""
     if column in CCX_TYPES:
         return run_ccx(deck_for[column], timeout)
     return run_kontakt(kontakt, deck_for[contact_type_for(column)], column,
-                       os.path.join(folder, "kontakt_" + column), timeout)
+                       os.path.join(folder, "kontakt_" + column), timeout,
+                       extra_args=kontakt_args)
 
 
 def runs_per_slave(model_for, name, args):
