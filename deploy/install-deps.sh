@@ -17,7 +17,7 @@ PACKAGES=(
   time
   systemd
   chromium
-  calculix-ccx calculix-ccx-test calculix-ccx-doc
+  calculix-ccx calculix-ccx-test calculix-ccx-doc calculix-cgx
 )
 
 # The dashboard's npm packages (uPlot, playwright-core) need node and npm. A machine that has

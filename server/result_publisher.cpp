@@ -14,7 +14,7 @@ std::string media_type_for(const fs::path& file) {
   if (name.ends_with(".xdmf")) return "application/xml";
   if (name.ends_with(".jsonl")) return "application/x-ndjson";
   if (name.ends_with(".json")) return "application/json";
-  return "text/plain; charset=utf-8";  // .dat, .sta, .cvg
+  return "text/plain; charset=utf-8";  // .dat, .frd, .sta, .cvg
 }
 
 std::vector<Artifact> publish_results(const fs::path& work, const fs::path& results) {

@@ -114,6 +114,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     u_previous = u;
 
     output::Frame frame = small_strain_frame(model, u, dT, threads);
+    frame.T = nodal_temperatures(model, dT);
     frame.step = step_no;
     frame.increment = 1;
     frame.step_time = period;

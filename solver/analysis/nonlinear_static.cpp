@@ -406,6 +406,7 @@ class NonlinearStatic {
     increments_->converged(it);
 
     output::Frame frame = converged_frame(model_, u_, a.ev);
+    frame.T = nodal_temperatures(model_, a.dT);
     frame.step = sc.number;
     frame.increment = increment_no;
     frame.step_time = a.t;

@@ -26,6 +26,8 @@ void average_to_nodes(const model::Model& model, output::Frame& frame) {
   const int n_nodes = model.n_nodes();
   frame.S_nodal = MatX6::Zero(n_nodes, 6);
   frame.E_nodal = MatX6::Zero(n_nodes, 6);
+  const bool plastic = frame.PEEQ.size() > 0;
+  if (plastic) frame.PEEQ_nodal = VecX::Zero(n_nodes);
   VecX count = VecX::Zero(n_nodes);
   for (int e = 0; e < model.n_elements(); ++e) {
     const auto& el = model.mesh.elements[e];
@@ -33,9 +35,11 @@ void average_to_nodes(const model::Model& model, output::Frame& frame) {
     const MatX& to_nodes = element::ip_to_node_extrapolation(el.type);
     const MatX S_node = to_nodes * frame.S.middleRows(first, n);
     const MatX E_node = to_nodes * frame.E.middleRows(first, n);
+    const VecX PEEQ_node = plastic ? VecX(to_nodes * frame.PEEQ.segment(first, n)) : VecX();
     for (std::size_t a = 0; a < el.nodes.size(); ++a) {
       frame.S_nodal.row(el.nodes[a]) += S_node.row(a);
       frame.E_nodal.row(el.nodes[a]) += E_node.row(a);
+      if (plastic) frame.PEEQ_nodal[el.nodes[a]] += PEEQ_node[static_cast<Index>(a)];
       count[el.nodes[a]] += 1;
     }
   }
@@ -43,6 +47,7 @@ void average_to_nodes(const model::Model& model, output::Frame& frame) {
     if (count[n] > 0) {
       frame.S_nodal.row(n) /= count[n];
       frame.E_nodal.row(n) /= count[n];
+      if (plastic) frame.PEEQ_nodal[n] /= count[n];
     }
 }
 

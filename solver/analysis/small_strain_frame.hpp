@@ -15,8 +15,8 @@ output::Frame small_strain_frame(const model::Model& model, const VecX& u, const
 /// A frame holding displacement u, with its point arrays sized for the model (values unset).
 output::Frame sized_frame(const model::Model& model, const VecX& u);
 
-/// Fills the nodal S and E: every element's point values extrapolated to its nodes, averaged
-/// over the elements at each node.
+/// Fills the nodal S and E (and PEEQ when the frame has it): every element's point values
+/// extrapolated to its nodes, averaged over the elements at each node.
 void average_to_nodes(const model::Model& model, output::Frame& frame);
 
 }  // namespace kontakt::analysis

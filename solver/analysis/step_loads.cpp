@@ -1,5 +1,7 @@
 #include "analysis/step_loads.hpp"
 
+#include <algorithm>
+
 #include "analysis/element_access.hpp"
 
 namespace kontakt::analysis {
@@ -74,6 +76,17 @@ VecX temperature_change(const model::Model& model, const model::Step& step) {
   if (step.temperatures.size() == 0) return VecX::Zero(n);
   VecX initial = model.initial_temperatures.size() ? model.initial_temperatures : VecX::Zero(n);
   return step.temperatures - initial;
+}
+
+VecX nodal_temperatures(const model::Model& model, const VecX& dT) {
+  const bool any = model.initial_temperatures.size() > 0 ||
+                   std::any_of(model.steps.begin(), model.steps.end(),
+                               [](const model::Step& s) { return s.temperatures.size() > 0; });
+  if (!any) return {};
+  VecX t = model.initial_temperatures.size() ? model.initial_temperatures
+                                             : VecX::Zero(model.n_nodes());
+  if (dT.size() == t.size()) t += dT;
+  return t;
 }
 
 void require_loads_reach_elements(const model::Model& model, const assembly::DofMap& dofs,

@@ -36,6 +36,10 @@ VecX prescribed_values(const model::Model& model, const model::Step& step,
 /// Temperature change from the initial state at every node at the step end (zero if none).
 VecX temperature_change(const model::Model& model, const model::Step& step);
 
+/// The nodal temperatures (initial + dT) a frame reports; empty when the model defines no
+/// temperatures at all (no initial conditions, no *TEMPERATURE in any step).
+VecX nodal_temperatures(const model::Model& model, const VecX& dT);
+
 /// A load on a node that no element or equation reaches would silently vanish: refuse it.
 void require_loads_reach_elements(const model::Model& model, const assembly::DofMap& dofs,
                                   const VecX& f);

@@ -7,11 +7,14 @@ namespace kontakt::app {
 ResultWriters::ResultWriters(const model::Model& model, const std::filesystem::path& dir,
                              const std::string& job)
     : dat_(model, dir / (job + ".dat")),
-      hdf5_(model, dir, job, output::requested_fields(model)) {}
+      hdf5_(model, dir, job, output::requested_fields(model)) {
+  if (output::wants_frd(model)) frd_.emplace(model, dir / (job + ".frd"));
+}
 
 void ResultWriters::on_frame(const model::Step& step, const output::Frame& frame) {
   dat_.write(step, frame);
   if (output::file_output_due(step, frame)) hdf5_.write(frame);
+  if (frd_) frd_->write(step, frame);
 }
 
 void ResultWriters::on_event(const analysis::Event& e) {

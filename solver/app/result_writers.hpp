@@ -2,19 +2,22 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "analysis/linear_static.hpp"
 #include "output/dat_writer.hpp"
+#include "output/frd_writer.hpp"
 #include "output/hdf5_writer.hpp"
 
 namespace kontakt::app {
 
-/// Writes each frame to the .dat and HDF5 files, and records every attempted increment (from the
-/// increment and cutback events) for the HDF5 /history table.
+/// Writes each frame to the .dat, HDF5 and (when the deck has file requests) .frd files, and
+/// records every attempted increment (from the increment and cutback events) for the HDF5
+/// /history table.
 class ResultWriters final : public analysis::FrameSink, public analysis::EventSink {
  public:
-  /// Opens DIR/JOB.dat and DIR/JOB.hdf.partial.
+  /// Opens DIR/JOB.dat, DIR/JOB.hdf.partial and, for a deck with file requests, DIR/JOB.frd.
   ResultWriters(const model::Model& model, const std::filesystem::path& dir,
                 const std::string& job);
   void on_frame(const model::Step& step, const output::Frame& frame) override;
@@ -25,6 +28,7 @@ class ResultWriters final : public analysis::FrameSink, public analysis::EventSi
  private:
   output::DatWriter dat_;
   output::Hdf5Writer hdf5_;
+  std::optional<output::FrdWriter> frd_;
 };
 
 }  // namespace kontakt::app

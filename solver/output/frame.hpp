@@ -61,6 +61,10 @@ struct Frame {
   VecX PEEQ;
   /// Nodal values extrapolated from the points and averaged over the elements at each node.
   MatX6 S_nodal, E_nodal;
+  /// PEEQ extrapolated and averaged the same way; empty when PEEQ is.
+  VecX PEEQ_nodal;
+  /// Nodal temperatures at the frame's time (n_nodes); empty for a model without temperatures.
+  VecX T;
 
   /// Contact state; both empty for models without contact pairs.
   std::vector<ContactPointRecord> contact_points;

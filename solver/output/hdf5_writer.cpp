@@ -279,18 +279,22 @@ Handle history_type() {
 }  // namespace
 
 // ---------------------------------------------------------------- free functions
-std::set<std::string> requested_fields(const model::Model& model) {
+std::set<std::string> file_variables(const model::Step& step) {
   std::set<std::string> out;
   const auto add = [&](const auto& requests) {
-    for (const auto& req : requests)
-      for (const auto& v : req.variables)
-        if (kHdf5Fields.count(v)) out.insert(v);
+    for (const auto& req : requests) out.insert(req.variables.begin(), req.variables.end());
   };
-  for (const auto& step : model.steps) {
-    add(step.node_files);
-    add(step.element_files);
-    add(step.contact_files);
-  }
+  add(step.node_files);
+  add(step.element_files);
+  add(step.contact_files);
+  return out;
+}
+
+std::set<std::string> requested_fields(const model::Model& model) {
+  std::set<std::string> out;
+  for (const auto& step : model.steps)
+    for (const auto& v : file_variables(step))
+      if (kHdf5Fields.count(v)) out.insert(v);
   if (out.empty()) {
     out = {"U", "S"};
     if (!model.contact_pairs.empty()) out.insert({"CDIS", "CSTR", "CELS"});

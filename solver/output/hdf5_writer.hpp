@@ -31,6 +31,10 @@ inline const std::set<std::string> kHdf5Fields{"U",    "RF",   "S",    "E",   "E
 /// contact pairs (a results file without fields is useless in ParaView).
 std::set<std::string> requested_fields(const model::Model& model);
 
+/// Every variable of the *NODE FILE / *EL FILE / *CONTACT FILE requests of `step` (and their
+/// OUTPUT synonyms), known to a writer or not.
+std::set<std::string> file_variables(const model::Step& step);
+
 /// True when any file request of `step` is due at `frame` (every frequency-th increment and at
 /// step end). A step without file requests is due at every step end only.
 bool file_output_due(const model::Step& step, const Frame& frame);

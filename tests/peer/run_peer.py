@@ -30,6 +30,14 @@ compared like the linear set (every block, 1e-4), one with NLGEOM like the nonli
 (blocks at common times, 1e-3); increments and iterations are printed side by side with
 ccx's.
 
+--frd compares the .frd files instead of the .dat (compare_frd.py) on the decks of the chosen
+set that request file output: the same nodes, elements and blocks, the values within the set's
+tolerance and frames (linear: every frame, 1e-4; --nlgeom: frames at common times, the last
+times equal, 1e-3; --contact: the same frames, the DISP blocks decide at 1e-2 and the other
+blocks' worst is reported; --tie as its decks' .dat). Blocks Kontakt does not write (ERROR, MESTRAIN, ...) are
+counted, not compared. The last lines count decks, blocks and values and give the worst
+difference per field.
+
 --reference-only runs no kontakt: it compares ccx 2.20's output with the suite's 2.11
 .dat.ref files for the qualifying decks and counts agreement at 1e-4 and 1e-3 (a check of this
 harness and of how stable ccx's own output is; exit code 0 unless a reference could not be
@@ -48,6 +56,8 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_dat  # noqa: E402
+import compare_frd  # noqa: E402
+import frd_file  # noqa: E402
 import select_decks  # noqa: E402
 
 DEFAULT_SUITE = select_decks.DEFAULT_SUITE
@@ -107,7 +117,7 @@ def ccx_reference(source_dir, name, args):
     work = work_root(args.work, source_dir)
     text = deck_text(source_dir, name, args)
     cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name, text)}.dat")
-    if os.path.exists(cached):
+    if os.path.exists(cached) and (not args.frd or os.path.exists(cached[:-4] + ".frd")):
         return cached
     run_dir = os.path.join(work, name, "ccx")
     shutil.rmtree(run_dir, ignore_errors=True)
@@ -124,6 +134,10 @@ def ccx_reference(source_dir, name, args):
     if not os.path.exists(produced) or os.path.getsize(produced) == 0:
         raise RuntimeError("ccx produced no .dat")
     os.makedirs(os.path.dirname(cached), exist_ok=True)
+    frd = os.path.join(run_dir, name + ".frd")
+    if os.path.exists(frd):  # before the .dat: a cached .dat means both are there
+        shutil.copy(frd, cached[:-4] + ".frd.part")
+        os.replace(cached[:-4] + ".frd.part", cached[:-4] + ".frd")
     shutil.copy(produced, cached + ".part")
     os.replace(cached + ".part", cached)
     return cached
@@ -190,6 +204,58 @@ def compare_contact(ours_text, ref_text, tolerance):
     return gate, detail.strip("; ")
 
 
+FRD_RESULTS = {}  # (folder, deck) -> compare_frd.Comparison, for the --frd summary
+
+
+def decides(args):
+    """The blocks whose error decides a deck in --frd mode: the DISP blocks in the contact set
+    (as its .dat displacements), every block otherwise."""
+    return (lambda block: block == "DISP") if args.contact else None
+
+
+def compare_frd_files(ours_path, ref_path, nonlinear, args):
+    """(compare_frd.Comparison, detail text) of our .frd against ccx's."""
+    tolerance = args.tolerance or (1e-3 if nonlinear else 1e-4)
+    result = compare_frd.Comparison(tolerance=tolerance)
+    for path, who in ((ours_path, "ours"), (ref_path, "ccx's")):
+        if not os.path.exists(path):
+            result.problems.append(f"no .frd ({who})")
+    if result.problems:
+        return result, "; ".join(result.problems)
+    try:
+        ours, ref = frd_file.read(ours_path), frd_file.read(ref_path)
+    except frd_file.FrdError as e:
+        result.problems.append(str(e))
+        return result, str(e)
+    frames = "common" if args.contact or nonlinear else "all"
+    result = compare_frd.compare(ours, ref, tolerance, frames)
+    detail = "; ".join(result.problems[:2])
+    if not result.problems:
+        worst = result.worst_per_field()
+        detail = " ".join(f"{k} {v:.1e}" for k, v in worst.items())
+        detail += (f" ({result.frames} frames compared of {result.frame_counts[0]} "
+                   f"(ccx {result.frame_counts[1]}), {len(result.blocks)} blocks, "
+                   f"{result.values()} values)")
+    return result, detail
+
+
+def frd_summary(decks):
+    """The --frd closing lines: decks, blocks, values, worst difference per field."""
+    results = [FRD_RESULTS[d] for d in decks if d in FRD_RESULTS]
+    worst, skipped = {}, {}
+    for r in results:
+        for k, v in r.worst_per_field().items():
+            worst[k] = max(worst.get(k, 0.0), v)
+        for k, v in r.skipped.items():
+            skipped[k] = skipped.get(k, 0) + v
+    print(f".frd compared: {len(results)} decks, {sum(r.frames for r in results)} frames, "
+          f"{sum(len(r.blocks) for r in results)} blocks, "
+          f"{sum(r.values() for r in results)} values; ccx blocks not written: "
+          f"{skipped or 'none'}")
+    print("worst relative difference per field: " +
+          (", ".join(f"{k} {v:.2e}" for k, v in sorted(worst.items())) or "-"))
+
+
 def run_one(source_dir, name, args):
     """(status, worst error or None, detail) for one deck."""
     try:
@@ -210,13 +276,21 @@ def run_one(source_dir, name, args):
         first = next((ln for ln in lines if "error" in ln.lower()),  # not a warning before it
                      lines[0] if lines else "(no message)")
         return "ERROR", None, f"exit {proc.returncode}: {first}"
+    nonlinear = args.nlgeom or (args.tie and select_decks.has_nlgeom_step(
+        select_decks.deck_path(source_dir, name), text))
+    if args.frd:
+        result, detail = compare_frd_files(os.path.join(run_dir, "out", name + ".frd"),
+                                           reference[:-4] + ".frd", nonlinear, args)
+        FRD_RESULTS[(source_dir, name)] = result
+        worst = result.worst(decides(args)) if result.decided(decides(args)) else None
+        if worst is None and not result.problems:
+            detail = "no DISP block: structure only; " + detail
+        return ("PASS" if result.passed(decides(args)) else "FAIL"), worst, detail
     ours_path = os.path.join(run_dir, "out", name + ".dat")
     if not os.path.exists(ours_path):
         return "ERROR", None, f"exit 0 but no out/{name}.dat"
     with open(ours_path, errors="replace") as f, open(reference) as g:
         ours_text, ref_text = f.read(), g.read()
-    nonlinear = args.nlgeom or (args.tie and select_decks.has_nlgeom_step(
-        select_decks.deck_path(source_dir, name), text))
     if args.contact:
         result, detail = compare_contact(ours_text, ref_text, args.tolerance)
     else:
@@ -283,11 +357,15 @@ def main():
     p.add_argument("--list", action="store_true", help="print the rule's verdict per deck and exit")
     p.add_argument("--reference-only", action="store_true",
                    help="no kontakt: compare ccx 2.20 with the suite's 2.11 .dat.ref files")
+    p.add_argument("--frd", action="store_true",
+                   help="compare the .frd files of the set's decks that request file output")
     args = p.parse_args()
     if args.nlgeom + args.contact + args.tie > 1:
         p.error("--nlgeom, --contact and --tie are separate sets")
     if args.tie and args.reference_only:
         p.error("--reference-only compares the suite's decks as they are; --tie derives them")
+    if args.frd and args.reference_only:
+        p.error("--reference-only compares .dat files; --frd compares kontakt's .frd with ccx's")
     if args.tolerance is None and not args.tie:  # the tie set's default depends on the deck
         args.tolerance = 1e-3 if args.nlgeom else 1e-2 if args.contact else 1e-4
 
@@ -305,6 +383,9 @@ def main():
             for name in sorted(set(good) | set(excluded)):
                 print(f"{name:24s} {'qualifies' if name in good else 'excluded: ' + excluded[name]}")
             print(f"{folder}: {len(good)} qualify, {len(excluded)} excluded")
+        if args.frd and not args.list:  # only the decks that request file output
+            good = [n for n in good if select_decks.has_file_requests(
+                select_decks.deck_path(folder, n), deck_text(folder, n, args))]
         decks += [(folder, n) for n in good if not args.only or n in args.only]
     if args.list:
         return 0
@@ -336,7 +417,9 @@ def main():
         print(f"{label(folder, name, args):20s} {types:16s} {status:8s} {shown:>11s}  {detail}", flush=True)
     tolerance = f"{args.tolerance:g}" if args.tolerance else "1e-4 (NLGEOM: 1e-3)"
     print(f"work folder {args.work}; tolerance {tolerance} on "
-          "max|ours - ccx| / max|ccx| per .dat block")
+          f"max|ours - ccx| / max|ccx| per {'.frd' if args.frd else '.dat'} block")
+    if args.frd:
+        frd_summary(decks)
     print(f"{passed} passed, {len(decks) - passed} failed")
     return 0 if passed == len(decks) else 1
 

@@ -365,6 +365,16 @@ def has_nlgeom_step(path, text=None):
                for k, p, _ in records(path, text=text))
 
 
+FILE_REQUESTS = {"NODE FILE", "EL FILE", "CONTACT FILE", "NODE OUTPUT", "ELEMENT OUTPUT",
+                 "CONTACT OUTPUT"}
+
+
+def has_file_requests(path, text=None):
+    """True when the deck (or `text`, standing for it) requests .frd output (*NODE FILE,
+    *EL FILE, *CONTACT FILE or their OUTPUT synonyms)."""
+    return any(k in FILE_REQUESTS for k, _, _ in records(path, text=text))
+
+
 def qualifying_decks(folder, nlgeom=False, contact=False, tie=False):
     """(qualifying names, {excluded name: reason}) over every deck in the folder."""
     good, excluded = [], {}

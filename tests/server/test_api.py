@@ -50,6 +50,11 @@ class ApiTest(unittest.TestCase):
         validate(listing, "ArtifactList")
         names = {a["name"]: a for a in listing["artifacts"]}
         self.assertTrue({"deck.hdf", "deck.xdmf", "deck.dat", "deck.sta", "deck.cvg", "deck.log.jsonl"} <= set(names), names)
+        # The deck asks for file output (*NODE FILE, *EL FILE): cgx's .frd is published too.
+        self.assertEqual(names["deck.frd"]["media_type"], "text/plain; charset=utf-8")
+        status, _, frd = self.d.request("GET", f"/v1/jobs/{job['id']}/results/deck.frd")
+        self.assertEqual(status, 200)
+        self.assertTrue(frd.startswith(b"    1C\n") and frd.endswith(b" 9999\n"), frd[-40:])
         status, headers, data = self.d.request("GET", f"/v1/jobs/{job['id']}/results/deck.hdf")
         self.assertEqual(status, 200)
         self.assertEqual(hashlib.sha256(data).hexdigest(), names["deck.hdf"]["sha256"])
