@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,8 @@ namespace kontakt::server {
 namespace {
 
 constexpr std::size_t kMaxEventLine = 1u << 20;
+/// The run's files are looked at no more often (they may be on NFS, one reader per job).
+constexpr auto kFilePoll = std::chrono::milliseconds(100);
 constexpr auto kScancelTimeout = std::chrono::seconds(30);
 /// The end of slurm-N.out quoted in a failure: the last lines, at most this many bytes.
 constexpr std::size_t kOutputTail = 600;
@@ -117,7 +120,8 @@ std::optional<ExitStatus> SlurmExecution::poll(std::chrono::milliseconds timeout
                                                const LineHandler& on_line, int wake_fd) {
   if (over_) return std::nullopt;
   pollfd fd{.fd = wake_fd, .events = POLLIN, .revents = 0};
-  if (::poll(&fd, wake_fd >= 0 ? 1 : 0, static_cast<int>(timeout.count())) < 0 && errno != EINTR)
+  const auto wait = std::max(timeout, kFilePoll);
+  if (::poll(&fd, wake_fd >= 0 ? 1 : 0, static_cast<int>(wait.count())) < 0 && errno != EINTR)
     throw std::system_error(errno, std::generic_category(), "poll");
   read_events(on_line);
   std::optional<ExitStatus> end = outcome();

@@ -6,6 +6,7 @@ outside kontaktd, cancel of a running job, and kill -9 of the daemon with jobs i
 (adopted again by the next daemon, nothing lost, no event twice)."""
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -218,7 +219,27 @@ class RestartTest(unittest.TestCase):
                 self.assertIn("deck.hdf", [a["name"] for a in results["artifacts"]])
         finally:
             d.stop()
-            import shutil
+            shutil.rmtree(data, ignore_errors=True)
+
+    def test_sigterm_leaves_slurm_jobs_running_for_the_next_daemon(self):
+        """A drain does not wait for or stop Slurm jobs: the daemon is gone at once, the job
+        runs on, and the next daemon finishes it."""
+        data = tempfile.mkdtemp(prefix="kontaktd-slurm-drain-")
+        d = slurm_daemon(data_dir=data, args=["--drain-timeout", "60"])
+        d.start()
+        try:
+            _, _, job = d.submit(decks.long_running(increments=800))
+            wait_iterating(d, job["id"])
+            t0 = time.monotonic()
+            self.assertEqual(d.terminate(timeout=20), 0)
+            self.assertLess(time.monotonic() - t0, 10)  # not the 60 s drain timeout
+            self.assertEqual(squeue_state(slurm_id(d, job["id"])), "RUNNING")
+            d.start()
+            final = d.wait(job["id"], timeout=90)
+            self.assertEqual((final["status"], final["attempts"]), ("succeeded", 1))
+            assert_no_event_twice(self, d, job["id"])
+        finally:
+            d.stop()
             shutil.rmtree(data, ignore_errors=True)
 
 
