@@ -110,6 +110,11 @@ std::optional<ExitStatus> SlurmExecution::slurm_end() {
   if (Clock::now() - *seen_ended_ < outcome_wait_) return std::nullopt;
   // Ended, and no outcome came: Slurm's record says how (scontrol has the exit code).
   std::optional<slurm::JobState> state = finished_state_(slurm_id_);
+  if (state && !slurm::is_finished(state->state)) {  // squeue was wrong after all: watch on
+    seen_ended_.reset();
+    ended_state_.reset();
+    return std::nullopt;
+  }
   if (!state) state = ended_state_;
   if (!state) state = slurm::JobState{.state = "UNKNOWN", .reason = "no longer known to Slurm"};
   failure_ = slurm::failure_from(slurm_id_, *state, output_tail(files_.output(slurm_id_)));

@@ -80,17 +80,18 @@ std::unique_ptr<Execution> SlurmExecutor::submit(const JobLaunch& job) {
   args.outcome_file = files.outcome();
   write_file(files.script(), slurm::batch_script(settings_.worker_exe, args, files, job.id),
              fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec);
-  const auto started = SlurmExecution::Clock::now();
   const CommandResult r = run_command(
       slurm::sbatch_argv(job.id, files, job.args.out_dir, resources, settings_.signal_grace),
       kSbatchTimeout);
   if (!r.ok()) throw ExecutorRefused(command_error(r));
   const auto slurm_id = slurm::parse_sbatch_id(r.out);
   if (!slurm_id) throw ExecutorRefused("sbatch printed no job id: " + r.out);
+  // A squeue that starts from now on lists the job (one that ran during sbatch may not).
+  const auto known = SlurmExecution::Clock::now();
   write_file(files.slurm_id(), *slurm_id + "\n", fs::perms::owner_read | fs::perms::owner_write);
   return std::make_unique<SlurmExecution>(
       *slurm_id, files, queue_, [this](const std::string& id) { return finished_state(id); },
-      settings_.outcome_wait, started, 0);
+      settings_.outcome_wait, known, 0);
 }
 
 std::unique_ptr<Execution> SlurmExecutor::attach(const JobLaunch& job) {

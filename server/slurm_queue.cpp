@@ -10,12 +10,17 @@ namespace {
 
 constexpr auto kSqueueTimeout = std::chrono::seconds(30);
 
-std::optional<std::map<std::string, slurm::JobState>> run_squeue() {
+}  // namespace
+
+SlurmQueue::SlurmQueue(std::chrono::milliseconds interval, Squeue squeue)
+    : interval_(interval), squeue_(std::move(squeue)) {}
+
+std::optional<std::string> SlurmQueue::run_squeue() {
   try {
     const CommandResult r = run_command({"squeue", "--me", "--noheader", "--states=all",
                                          std::string("--format=") + slurm::kSqueueFormat},
                                         kSqueueTimeout);
-    if (r.ok()) return slurm::parse_squeue(r.out);
+    if (r.ok()) return r.out;
     std::fprintf(stderr, "kontaktd: squeue: %s\n", command_error(r).c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kontaktd: squeue: %s\n", e.what());
@@ -23,14 +28,12 @@ std::optional<std::map<std::string, slurm::JobState>> run_squeue() {
   return std::nullopt;
 }
 
-}  // namespace
-
 void SlurmQueue::refresh_if_old() {
   const Clock::time_point now = Clock::now();
   if (now - tried_ < interval_) return;
   tried_ = now;
-  if (auto jobs = run_squeue()) {
-    jobs_ = std::move(*jobs);
+  if (const auto out = squeue_()) {
+    jobs_ = slurm::parse_squeue(*out);
     taken_ = now;
   }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -17,7 +18,12 @@ namespace kontakt::server {
 class SlurmQueue {
  public:
   using Clock = std::chrono::steady_clock;
-  explicit SlurmQueue(std::chrono::milliseconds interval) : interval_(interval) {}
+  /// The output of `squeue --me --noheader --states=all --format=kSqueueFormat`; nullopt when
+  /// it failed.
+  using Squeue = std::function<std::optional<std::string>()>;
+  /// `squeue`: the real one unless a test gives its own.
+  explicit SlurmQueue(std::chrono::milliseconds interval, Squeue squeue = run_squeue);
+  static std::optional<std::string> run_squeue();
 
   struct Answer {
     enum class Kind { Unknown, Listed, Absent } kind = Kind::Unknown;
@@ -35,6 +41,7 @@ class SlurmQueue {
   void refresh_if_old();
 
   const std::chrono::milliseconds interval_;
+  const Squeue squeue_;
   std::mutex mutex_;
   std::map<std::string, slurm::JobState> jobs_;
   std::optional<Clock::time_point> taken_;  ///< when the last good squeue started

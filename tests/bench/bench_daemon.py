@@ -168,6 +168,8 @@ def main():
     p.add_argument("--executor", choices=("local", "slurm"), default="local",
                    help="slurm: also measure a daemon with --executor slurm on a private Slurm "
                         "(parts 1 and 2), side by side with the local executor")
+    p.add_argument("--slurm-workers", type=int, default=4,
+                   help="--workers of the slurm daemon: jobs in Slurm at once (default 4)")
     args = p.parse_args()
     if args.smoke:
         args.jobs, args.runs, args.wrk_seconds, args.cancel_dofs = 20, 5, 2, 30000
@@ -184,9 +186,9 @@ def main():
         if args.executor == "slurm":
             from slurm_cluster import LocalSlurm
             cluster = LocalSlurm().__enter__()
-            # As many jobs in Slurm as it can run (2 CPUs), and as many pending behind them.
             slurm_d = harness.Daemon(args.kontaktd, env={"SLURM_CONF": cluster.conf},
-                                     args=["--executor", "slurm", "--workers", "4"]).start()
+                                     args=["--executor", "slurm", "--workers",
+                                           str(args.slurm_workers)]).start()
         cli = cli_latency(args.kontakt, deck_path, work, args.runs)
         print(f"1. tiny deck, median of {args.runs}: kontakt solve {1e3 * statistics.median(cli):.1f} ms "
               f"(process wall time)")
@@ -214,7 +216,7 @@ def main():
               f"= {n / total:.1f} jobs/s")
         if slurm_d:
             n, submitted, total = throughput(slurm_d, deck, args.jobs)
-            print(f"   --executor slurm (2 CPUs, 4 jobs in Slurm at once): submitted in "
+            print(f"   --executor slurm (2 CPUs, {args.slurm_workers} jobs in Slurm at once): submitted in "
                   f"{submitted:.2f} s, all done in {total:.2f} s = {n / total:.1f} jobs/s")
         job_id = d.submit(deck)[2]["id"]
         d.wait(job_id)

@@ -242,12 +242,10 @@ TEST(Settings, ExecutorAndSlurmDefaults) {
 TEST(SlurmExecution, TailsEventsAndEndsWithTheOutcome) {
   TempDir dir;
   const slurm::RunFiles files{dir.path()};
-  SlurmQueue queue(std::chrono::hours(1));
+  SlurmQueue queue(std::chrono::hours(1), [] { return std::optional<std::string>(); });
   SlurmExecution execution("5", files, queue,
                            [](const std::string&) { return std::optional<slurm::JobState>(); },
-                           // Known to Slurm from an hour on: squeue's answers cannot end it.
-                           std::chrono::milliseconds(0),
-                           SlurmExecution::Clock::now() + std::chrono::hours(1), 1);
+                           std::chrono::milliseconds(0), SlurmExecution::Clock::now(), 1);
   std::vector<std::string> lines;
   const LineHandler collect = [&](std::string_view l) { lines.emplace_back(l); };
   EXPECT_FALSE(execution.poll(std::chrono::milliseconds(0), collect, -1));  // no file yet
@@ -268,7 +266,7 @@ TEST(SlurmExecution, TailsEventsAndEndsWithTheOutcome) {
 TEST(SlurmExecution, ASigtermFromOutsideIsSlurmsAndSaysSo) {
   TempDir dir;
   const slurm::RunFiles files{dir.path()};
-  SlurmQueue queue(std::chrono::hours(1));
+  SlurmQueue queue(std::chrono::hours(1), [] { return std::optional<std::string>(); });
   SlurmExecution execution("9", files, queue,
                            [](const std::string&) { return std::optional<slurm::JobState>(); },
                            std::chrono::milliseconds(0), SlurmExecution::Clock::now(), 0);
@@ -277,6 +275,66 @@ TEST(SlurmExecution, ASigtermFromOutsideIsSlurmsAndSaysSo) {
   ASSERT_TRUE(execution.failure());
   EXPECT_EQ(execution.failure()->reason, "time_limit");
   EXPECT_TRUE(execution.outlives_daemon());
+}
+
+/// Without an outcome file, Slurm's word ends the run: squeue's state, then scontrol's record
+/// (with the exit signal) and the end of slurm-N.out in the message.
+TEST(SlurmExecution, WithoutAnOutcomeSlurmsRecordIsTheFailure) {
+  TempDir dir;
+  const slurm::RunFiles files{dir.path()};
+  std::ofstream(files.output("9")) << "line one\nkontaktd: something went wrong\n";
+  SlurmQueue queue(std::chrono::milliseconds(0),
+                   [] { return std::optional<std::string>("9|FAILED|NonZeroExitCode|id\n"); });
+  SlurmExecution execution(
+      "9", files, queue,
+      [](const std::string& id) {
+        EXPECT_EQ(id, "9");
+        return std::optional(slurm::JobState{.state = "FAILED", .reason = "NonZeroExitCode",
+                                             .exit = ExitStatus{.signaled = true, .code = 9}});
+      },
+      std::chrono::milliseconds(0), SlurmExecution::Clock::now(), 0);
+  const auto end = execution.poll(std::chrono::milliseconds(0), [](std::string_view) {}, -1);
+  ASSERT_TRUE(end);
+  ASSERT_TRUE(execution.failure());
+  EXPECT_EQ(execution.failure()->reason, "solver_crashed");
+  EXPECT_NE(execution.failure()->message.find("Slurm job 9 ended FAILED (NonZeroExitCode) with "
+                                              "signal 9 (SIGKILL"),
+            std::string::npos)
+      << execution.failure()->message;
+  EXPECT_NE(execution.failure()->message.find("something went wrong"), std::string::npos);
+}
+
+/// squeue may miss a job it should list (it ran while sbatch was answering): when scontrol
+/// then says the job is pending or running, the run is watched on, not failed.
+TEST(SlurmExecution, AJobSqueueMissedButScontrolKnowsIsWatchedOn) {
+  TempDir dir;
+  const slurm::RunFiles files{dir.path()};
+  SlurmQueue queue(std::chrono::milliseconds(0), [] { return std::optional<std::string>(""); });
+  std::string scontrol_says = "PENDING";
+  SlurmExecution execution(
+      "4", files, queue,
+      [&](const std::string&) { return std::optional(slurm::JobState{.state = scontrol_says}); },
+      std::chrono::milliseconds(0), SlurmExecution::Clock::now(), 0);
+  const LineHandler ignore = [](std::string_view) {};
+  EXPECT_FALSE(execution.poll(std::chrono::milliseconds(0), ignore, -1));
+  EXPECT_FALSE(execution.poll(std::chrono::milliseconds(0), ignore, -1));
+  std::ofstream(files.outcome()) << worker::outcome_text(worker::Exit::NotConverged);
+  const auto end = execution.poll(std::chrono::milliseconds(0), ignore, -1);
+  ASSERT_TRUE(end);
+  EXPECT_EQ(end->code, 3);
+  EXPECT_FALSE(execution.failure());
+}
+
+/// Slurm forgot the job (past MinJobAge, no jobcomp log) and no outcome came: worker_lost.
+TEST(SlurmExecution, AJobSlurmForgotIsLost) {
+  TempDir dir;
+  SlurmQueue queue(std::chrono::milliseconds(0), [] { return std::optional<std::string>(""); });
+  SlurmExecution execution(
+      "8", {dir.path()}, queue, [](const std::string&) { return std::optional<slurm::JobState>(); },
+      std::chrono::milliseconds(0), SlurmExecution::Clock::now(), 0);
+  ASSERT_TRUE(execution.poll(std::chrono::milliseconds(0), [](std::string_view) {}, -1));
+  EXPECT_EQ(execution.failure()->reason, "worker_lost");
+  EXPECT_NE(execution.failure()->message.find("no longer known to Slurm"), std::string::npos);
 }
 
 }  // namespace
