@@ -140,11 +140,22 @@ std::optional<ExitStatus> SlurmExecution::poll(std::chrono::milliseconds timeout
 
 bool SlurmExecution::stop(bool graceful) {
   if (over_) return false;
-  if (graceful &&
-      scancel({"scancel", "--quiet", "--signal=TERM", "--batch", slurm_id_}))
-    return true;
-  // Not running yet (nothing to signal), or the hard stop.
+  // Only a running job has a batch shell to signal: Slurm answers a signal to a pending job
+  // with success, and the job starts later all the same (seen with Slurm 22.05).
+  if (graceful && state_now() == "RUNNING")
+    return scancel({"scancel", "--quiet", "--signal=TERM", "--batch", slurm_id_});
   return scancel({"scancel", "--quiet", slurm_id_});
+}
+
+std::string SlurmExecution::state_now() const {
+  try {
+    const CommandResult r = run_command(
+        {"squeue", "--noheader", "--jobs=" + slurm_id_, "--format=%T"}, kScancelTimeout);
+    std::string state = r.out.substr(0, r.out.find('\n'));
+    return r.ok() ? state : std::string();
+  } catch (const std::exception&) {
+    return {};
+  }
 }
 
 }  // namespace kontakt::server

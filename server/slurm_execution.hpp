@@ -33,8 +33,8 @@ class SlurmExecution final : public Execution {
 
   std::optional<ExitStatus> poll(std::chrono::milliseconds timeout, const LineHandler& on_line,
                                  int wake_fd) override;
-  /// Graceful: `scancel --signal=TERM --batch` (a plain scancel for a job not yet running);
-  /// otherwise a plain scancel (Slurm's TERM, then KILL after its KillWait).
+  /// Graceful: `scancel --signal=TERM --batch` (a plain scancel for a job not running, e.g.
+  /// pending); otherwise a plain scancel (Slurm's TERM, then KILL after its KillWait).
   bool stop(bool graceful) override;
   std::size_t n_dropped_lines() const override { return lines_.n_dropped(); }
   std::optional<ExecutorFailure> failure() const override { return failure_; }
@@ -47,6 +47,8 @@ class SlurmExecution final : public Execution {
   std::optional<ExitStatus> outcome();
   /// Slurm's word on the job when it has ended without an outcome; nullopt while it has not.
   std::optional<ExitStatus> slurm_end();
+  /// The job's state in a fresh squeue (RUNNING, PENDING, ...); empty when unknown.
+  std::string state_now() const;
 
   const std::string slurm_id_;
   const slurm::RunFiles files_;

@@ -2,8 +2,9 @@
 """kontaktd --executor slurm against a real Slurm started here (slurm_cluster.py: munged,
 slurmctld, slurmd on this host, torn down at the end, also on failure): submit with progress
 over SSE and the HDF5 results, a deck that fails in its run, sbatch refusals, a Slurm job killed
-outside kontaktd, cancel of a running job, and kill -9 of the daemon with jobs in Slurm
-(adopted again by the next daemon, nothing lost, no event twice)."""
+outside kontaktd, cancel of a running job and of one pending in Slurm, and kill -9 and SIGTERM
+of the daemon with jobs in Slurm (adopted again by the next daemon, nothing lost, no event
+twice)."""
 import json
 import os
 import shutil
@@ -190,6 +191,32 @@ class SlurmExecutorTest(unittest.TestCase):
         while squeue_state(slurm_id(d, job["id"])) not in ("COMPLETED", "CANCELLED", "FAILED"):
             self.assertLess(time.monotonic(), deadline)
             time.sleep(0.2)
+
+    def test_cancel_a_job_still_pending_in_slurm(self):
+        """Both CPUs taken: the third job pends in Slurm. Its cancel is a plain scancel (there
+        is no batch shell to signal yet), and it ends canceled without ever running."""
+        d = self.d
+        # Long enough to outlast the test (canceled at its end).
+        busy = [d.submit(decks.long_running(increments=5000))[2] for _ in range(2)]
+        for job in busy:
+            wait_iterating(d, job["id"])
+        _, _, pending = d.submit(decks.tiny())
+        deadline = time.monotonic() + 20
+        while not os.path.exists(os.path.join(d.data_dir, "jobs", pending["id"], "slurm",
+                                              "slurm_job_id")):
+            self.assertLess(time.monotonic(), deadline)
+            time.sleep(0.05)
+        self.assertEqual(squeue_state(slurm_id(d, pending["id"])), "PENDING")
+        d.json("POST", f"/v1/jobs/{pending['id']}/cancel")
+        final = d.wait(pending["id"], timeout=30)
+        self.assertEqual(final["status"], "canceled")
+        self.assertEqual(squeue_state(slurm_id(d, pending["id"])), "CANCELLED")
+        self.assertFalse(os.path.exists(os.path.join(d.data_dir, "jobs", pending["id"], "slurm",
+                                                     "events.ndjson")))
+        for job in busy:
+            d.json("POST", f"/v1/jobs/{job['id']}/cancel")
+        for job in busy:
+            self.assertEqual(d.wait(job["id"], timeout=30)["status"], "canceled")
 
 
 class RestartTest(unittest.TestCase):
