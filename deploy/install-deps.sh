@@ -16,6 +16,7 @@ PACKAGES=(
   wrk curl
   time
   systemd
+  slurm-wlm slurmctld slurmd slurm-client munge
   chromium
   calculix-ccx calculix-ccx-test calculix-ccx-doc calculix-cgx
 )

@@ -3,6 +3,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/thread_pool.hpp>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -14,6 +15,8 @@
 #include "server/job_files.hpp"
 #include "server/job_store.hpp"
 #include "server/listener.hpp"
+#include "server/local_executor.hpp"
+#include "server/slurm_executor.hpp"
 #include "server/worker_pool.hpp"
 
 namespace fs = std::filesystem;
@@ -41,6 +44,36 @@ std::set<std::string> read_tokens(const std::string& file) {
   return {tokens.begin(), tokens.end()};
 }
 
+/// Slurm's warning SIGTERM comes at least this long before the time limit (Slurm may send
+/// it up to a minute early anyway), or --kill-grace if longer.
+constexpr int kMinSlurmSignalGrace = 60;
+
+std::unique_ptr<Executor> make_executor(const Settings& settings) {
+  if (settings.executor == "slurm")
+    return std::make_unique<SlurmExecutor>(SlurmSettings{
+        .defaults = settings.slurm,
+        .worker_exe = fs::read_symlink(kSelf),  // its path on the nodes too
+        .signal_grace = std::max(kMinSlurmSignalGrace,
+                                 static_cast<int>(std::ceil(settings.kill_grace)))});
+  // Every worker thread finds a process waiting, and one more is loading.
+  return std::make_unique<LocalExecutor>(kSelf, settings.threads_per_job,
+                                         static_cast<std::size_t>(settings.workers) + 1);
+}
+
+/// Running and canceling jobs of the daemon before, for an executor whose runs went on.
+std::vector<JobRecord> unfinished_runs(JobStore& store) {
+  std::vector<JobRecord> jobs;
+  JobQuery query;
+  query.statuses = {JobStatus::Running, JobStatus::Canceling};
+  query.limit = 1000;
+  while (true) {
+    JobPage page = store.list_jobs(query);
+    for (JobRecord& job : page.jobs) jobs.push_back(std::move(job));
+    if (!page.more || jobs.empty()) return jobs;
+    query.after = std::pair{jobs.back().created_ms, jobs.back().id};
+  }
+}
+
 /// Job folders without a record are uploads that a crash interrupted before their 201.
 void remove_orphan_folders(JobStore& store, const JobFiles& files) {
   const auto ids = store.all_ids();
@@ -54,25 +87,36 @@ void remove_orphan_folders(JobStore& store, const JobFiles& files) {
 int run_daemon(const Settings& settings) {
   const std::set<std::string> tokens = read_tokens(settings.token_file);
   fs::create_directories(settings.data_dir);
-  JobStore store(fs::path(settings.data_dir) / "kontakt.db");
-  JobFiles files(settings.data_dir);
-  const RecoveryReport recovered = store.recover(settings.max_attempts);
-  if (recovered.requeued + recovered.failed + recovered.canceled > 0)
-    std::printf("kontaktd: recovered after a stop: %d requeued, %d failed (worker_lost), %d canceled\n",
-                recovered.requeued, recovered.failed, recovered.canceled);
+  // Absolute: a Slurm job finds its folder by this path on its node.
+  const fs::path data_dir = fs::absolute(settings.data_dir);
+  JobStore store(data_dir / "kontakt.db");
+  JobFiles files(data_dir);
+  const std::unique_ptr<Executor> executor = make_executor(settings);
+  std::vector<JobRecord> adopted;
+  if (executor->outlives_daemon()) {
+    adopted = unfinished_runs(store);
+    if (!adopted.empty())
+      std::printf("kontaktd: %zu jobs running or canceling in %s: watched again\n",
+                  adopted.size(), settings.executor.c_str());
+  } else {
+    const RecoveryReport recovered = store.recover(settings.max_attempts);
+    if (recovered.requeued + recovered.failed + recovered.canceled > 0)
+      std::printf("kontaktd: recovered after a stop: %d requeued, %d failed (worker_lost), %d canceled\n",
+                  recovered.requeued, recovered.failed, recovered.canceled);
+  }
   remove_orphan_folders(store, files);
 
   const worker::Limits limits{.memory_bytes = settings.job_memory_limit,
                               .file_size_bytes = settings.job_file_size_limit};
-  WorkerPool pool(store, files,
+  WorkerPool pool(store, files, *executor,
                   {.workers = settings.workers,
                    .threads_per_job = settings.threads_per_job,
                    .job_time_limit = settings.job_time_limit,
                    .max_attempts = settings.max_attempts,
                    .limits = limits,
                    .kill_grace = std::chrono::milliseconds(
-                       static_cast<long long>(1000 * settings.kill_grace)),
-                   .worker_exe = kSelf});
+                       static_cast<long long>(1000 * settings.kill_grace))});
+  pool.adopt(std::move(adopted));
   handlers::ApiContext api{
       .store = store, .files = files, .control = pool,
       .check_deck = process_deck_checker(kSelf, {.memory_bytes = settings.job_memory_limit},
@@ -104,8 +148,9 @@ int run_daemon(const Settings& settings) {
       ioc.stop();
     });
   });
-  std::printf("kontaktd: listening on http://%s:%u (data %s, %d workers)\n", settings.bind.c_str(),
-              listener->port(), settings.data_dir.c_str(), settings.workers);
+  std::printf("kontaktd: listening on http://%s:%u (data %s, %d workers, executor %s)\n",
+              settings.bind.c_str(), listener->port(), settings.data_dir.c_str(), settings.workers,
+              settings.executor.c_str());
   std::fflush(stdout);
 
   std::vector<std::thread> io_threads;

@@ -65,6 +65,7 @@ json job_document(const JobRecord& job, std::optional<int> queue_position, bool 
           {"main", job.main_file},
           {"scheme", or_null(job.scheme)},
           {"labels", job.labels},
+          {"resources", to_json(job.resources)},
           {"created", rfc3339(job.created_ms)},
           {"started", optional_time(job.started_ms)},
           {"finished", optional_time(job.finished_ms)},

@@ -65,6 +65,9 @@ JobVerdict crashed(const ProcessEnd& end, const OutcomeContext& context) {
 
 JobVerdict judge(const ProcessEnd& end, const OutcomeContext& context) {
   const bool ours = end.cause != StopCause::None;
+  if (end.failure)
+    return ours ? stopped_on_request(end, context)
+                : finish(JobStatus::Failed, end.failure->reason, end.failure->message);
   if (end.exit.signaled) return ours ? stopped_on_request(end, context) : crashed(end, context);
   switch (static_cast<Exit>(end.exit.code)) {
     case Exit::Converged: return finish(JobStatus::Succeeded, "", "");

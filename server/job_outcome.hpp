@@ -4,7 +4,8 @@
 //
 // Reason codes of failed jobs (proto/openapi.yaml, Reason): not_converged, input_error,
 // solver_error, solver_crashed (a signal: named in the message), memory_limit, time_limit,
-// disk_full, file_size_limit, internal; worker_lost comes from recovery after a daemon crash.
+// disk_full, file_size_limit, internal; worker_lost comes from recovery after a daemon crash,
+// or from an executor that lost the run (ProcessEnd::failure, e.g. a Slurm NODE_FAIL).
 #pragma once
 
 #include <string>

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "server/job_resources.hpp"
 #include "server/job_state.hpp"
 
 namespace kontakt::server {
@@ -45,6 +46,7 @@ struct JobRecord {
   std::optional<JobSummary> summary;
   std::optional<std::string> idempotency_key;
   std::string fingerprint;           ///< sha256 of the submission, to check key reuse
+  JobResources resources;            ///< the submission's own, over the executor's defaults
 };
 
 /// What a submission stores; the store fills in status, times and counters.
@@ -56,6 +58,7 @@ struct NewJob {
   double planned_time = 0;
   std::optional<std::string> idempotency_key;
   std::string fingerprint;
+  JobResources resources;
 };
 
 /// One entry of a job's event log; `seq` is the SSE id and the `since` cursor.

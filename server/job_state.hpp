@@ -30,6 +30,6 @@ bool transition_allowed(JobStatus from, JobStatus to);
 inline constexpr std::string_view kReasonCodes[] = {
     "not_converged", "input_error", "solver_error", "solver_crashed", "memory_limit",
     "time_limit",    "disk_full",   "file_size_limit", "worker_lost", "internal",
-    "canceled",      "requeued"};
+    "canceled",      "requeued",    "executor_refused"};
 
 }  // namespace kontakt::server

@@ -15,7 +15,7 @@ namespace {
 constexpr const char* kJobColumns =
     "id, name, status, reason, message, main_file, scheme, labels, created_ms, updated_ms, "
     "started_ms, finished_ms, attempts, n_steps, planned_time, progress, summary, "
-    "idempotency_key, fingerprint";
+    "idempotency_key, fingerprint, resources";
 
 json progress_to_json(const JobProgress& p) {
   json j{{"step", p.step},           {"increment", p.increment}, {"attempt", p.attempt},
@@ -84,6 +84,7 @@ JobRecord record_from_row(const Statement& st) {
   if (!st.is_null(16)) r.summary = summary_from_json(json::parse(st.text(16)));
   r.idempotency_key = st.optional_text(17);
   r.fingerprint = st.text(18);
+  read_resources(json::parse(st.text(19)), r.resources);  // written by insert_job: valid
   return r;
 }
 
@@ -187,12 +188,13 @@ std::pair<InsertResult, JobRecord> JobStore::insert_job(const NewJob& job) {
   const std::int64_t now = now_ms();
   Statement st(writer_,
                "INSERT INTO jobs (id, name, status, main_file, scheme, labels, created_ms, "
-               "updated_ms, n_steps, planned_time, idempotency_key, fingerprint) "
-               "VALUES (?, ?, 'queued', ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+               "updated_ms, n_steps, planned_time, idempotency_key, fingerprint, resources) "
+               "VALUES (?, ?, 'queued', ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   st.bind(1, job.id).bind(2, job.name).bind(3, job.main_file).bind_optional(4, job.scheme);
   st.bind(5, json_text(json(job.labels))).bind(6, now).bind(7, now);
   st.bind(8, static_cast<std::int64_t>(job.n_steps)).bind(9, job.planned_time);
-  st.bind_optional(10, job.idempotency_key).bind(11, job.fingerprint).run();
+  st.bind_optional(10, job.idempotency_key).bind(11, job.fingerprint);
+  st.bind(12, json_text(to_json(job.resources))).run();
   insert_event(writer_, job.id, "status",
                json_text(json{{"event", "status"}, {"status", "queued"}}));
   auto record = select_job(writer_, "id", job.id);
@@ -428,6 +430,15 @@ std::vector<Artifact> JobStore::artifacts(const std::string& id) {
   std::vector<Artifact> list;
   while (st.step()) list.push_back({st.text(0), st.text(1), st.integer(2), st.text(3)});
   return list;
+}
+
+std::int64_t JobStore::count_run_events(const std::string& id) {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT COUNT(*) FROM job_events AS e JOIN jobs ON jobs.id = e.job_id "
+                           "WHERE e.job_id = ? AND e.run = jobs.attempts AND e.kind != 'status'");
+  st.bind(1, id);
+  st.step();
+  return st.integer(0);
 }
 
 StoreCounts JobStore::counts() {

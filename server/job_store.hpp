@@ -97,6 +97,9 @@ class JobStore {
   std::vector<StoredEvent> events_since(const std::string& id, std::int64_t since,
                                         const std::vector<std::string>& kinds, int limit);
   std::vector<Artifact> artifacts(const std::string& id);
+  /// Solver events (not status changes) stored from the job's current run: where a daemon
+  /// that adopts the run after a restart picks up its event log.
+  std::int64_t count_run_events(const std::string& id);
 
   StoreCounts counts();
   /// Every label key in use, the most recently used first.

@@ -8,7 +8,7 @@ namespace kontakt::server {
 namespace {
 
 /// Migration i takes the schema from version i to i + 1. Append only; never edit a released one.
-constexpr std::array<const char*, 1> kMigrations{
+constexpr std::array<const char*, 2> kMigrations{
     R"sql(
 CREATE TABLE jobs (
   id              TEXT PRIMARY KEY,
@@ -50,6 +50,10 @@ CREATE TABLE artifacts (
   sha256     TEXT NOT NULL,
   PRIMARY KEY (job_id, name)
 ) WITHOUT ROWID;
+)sql",
+    // The executor resources a submission asked for (job_resources.hpp), a JSON object.
+    R"sql(
+ALTER TABLE jobs ADD COLUMN resources TEXT NOT NULL DEFAULT '{}';
 )sql"};
 
 int current_version(SqliteDb& db) {

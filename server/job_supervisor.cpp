@@ -3,7 +3,6 @@
 #include <sys/eventfd.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <system_error>
 
 using Clock = std::chrono::steady_clock;
@@ -39,7 +38,7 @@ bool writing_results(const fs::path& dir) {
   return false;
 }
 
-ProcessEnd supervise_job(WorkerProcess& process, analysis::EventSink& sink, StopSignal& stop,
+ProcessEnd supervise_job(Execution& process, analysis::EventSink& sink, StopSignal& stop,
                          const SupervisionSettings& settings, const fs::path& work_dir) {
   ProcessEnd end;
   const auto started = Clock::now();
@@ -70,8 +69,12 @@ ProcessEnd supervise_job(WorkerProcess& process, analysis::EventSink& sink, Stop
         now - started > std::chrono::duration<double>(settings.time_limit))
       stop.request(StopCause::TimeLimit);
     if (stop.cause() == StopCause::None) continue;
+    if (stop.cause() == StopCause::Drain && process.outlives_daemon()) {
+      end.detached = true;
+      break;
+    }
     if (!term_sent) {
-      process.send(SIGTERM);
+      process.stop(true);
       term_sent = now;
       continue;
     }
@@ -79,9 +82,10 @@ ProcessEnd supervise_job(WorkerProcess& process, analysis::EventSink& sink, Stop
     const bool frame_in_progress =
         waited < settings.grace + settings.max_frame_write && writing_results(work_dir);
     if (!end.killed && waited > settings.grace && !frame_in_progress)
-      end.killed = process.send(SIGKILL);
+      end.killed = process.stop(false);
   }
   end.cause = stop.cause();
+  end.failure = process.failure();
   end.n_bad_reports += process.n_dropped_lines();
   end.seconds = std::chrono::duration<double>(Clock::now() - started).count();
   return end;

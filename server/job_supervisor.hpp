@@ -1,9 +1,11 @@
-// A worker thread's watch over one job process: every event the process reports goes to the
-// job's sink (the store and the SSE streams) as it arrives; a stop request or the wall-time
-// limit sends SIGTERM (the solver stops at its next iteration and finishes its files) and, if
-// the process is still there after the grace period, SIGKILL (a factorisation cannot be
-// interrupted otherwise). The SIGKILL waits while a result frame is being written (a
-// `*.partial` file in the work folder), so the results of converged increments stay whole.
+// A worker thread's watch over one job's run (an Execution: a local process, a Slurm job):
+// every event the run reports goes to the job's sink (the store and the SSE streams) as it
+// arrives; a stop request or the wall-time limit stops it gracefully (SIGTERM: the solver stops
+// at its next iteration and finishes its files) and, if it is still there after the grace
+// period, hard (SIGKILL: a factorisation cannot be interrupted otherwise). The hard stop waits
+// while a result frame is being written (a `*.partial` file in the work folder), so the
+// results of converged increments stay whole. A drain leaves a run that outlives the daemon
+// (Slurm) running: the supervisor lets go of it, and the next daemon attaches to it.
 #pragma once
 
 #include <atomic>
@@ -15,7 +17,7 @@
 
 #include "analysis/events.hpp"
 #include "server/child_process.hpp"
-#include "server/worker_process.hpp"
+#include "server/execution.hpp"
 
 namespace kontakt::server {
 
@@ -51,7 +53,9 @@ struct SupervisionSettings {
 struct ProcessEnd {
   ExitStatus exit;
   StopCause cause = StopCause::None;
-  bool killed = false;                   ///< the supervisor sent SIGKILL
+  bool killed = false;                   ///< the supervisor stopped it hard (SIGKILL)
+  bool detached = false;                 ///< a drain let go of a run that goes on (Slurm)
+  std::optional<ExecutorFailure> failure;  ///< the executor's verdict when `exit` is not the run's
   std::optional<analysis::Event> done;   ///< the last `done` event reported
   std::size_t n_events = 0;
   std::size_t n_bad_reports = 0;         ///< lines that were not events, overlong or cut off
@@ -61,7 +65,7 @@ struct ProcessEnd {
 
 /// Supervises `process` until it ends (see the file comment). The stop request is read from
 /// `stop`; a time limit reached records StopCause::TimeLimit in it.
-ProcessEnd supervise_job(WorkerProcess& process, analysis::EventSink& sink, StopSignal& stop,
+ProcessEnd supervise_job(Execution& process, analysis::EventSink& sink, StopSignal& stop,
                          const SupervisionSettings& settings,
                          const std::filesystem::path& work_dir);
 

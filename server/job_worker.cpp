@@ -141,6 +141,20 @@ Exit run(const worker::Args& args) {
   return Exit::SolverError;
 }
 
+/// The run's end for an executor that is not the process's parent: written whole, then
+/// renamed, so a reader never sees half of it.
+void write_outcome(const fs::path& file, Exit exit) {
+  const fs::path partial = file.string() + ".tmp";
+  {
+    std::ofstream out(partial, std::ios::trunc);
+    out << worker::outcome_text(exit);
+    out.flush();
+    if (!out) return;  // the executor's fallback (Slurm's job state) says how it ended
+  }
+  std::error_code ec;
+  fs::rename(partial, file, ec);
+}
+
 /// The requests of a standby process: JSON lines on stdin (WorkerProcess::start), read a
 /// block at a time (a byte at a time costs a system call per byte of every request).
 class RequestReader {
@@ -195,7 +209,10 @@ int job_worker_main(std::vector<std::string> argv) {
     const auto work = prepare(argv);
     if (const auto* exit = std::get_if<Exit>(&work)) return static_cast<int>(*exit);
     const auto& args = std::get<worker::Args>(work);
-    return static_cast<int>(args.mode == worker::Mode::Check ? check(args) : run(args));
+    if (args.mode == worker::Mode::Check) return static_cast<int>(check(args));
+    const Exit ran = run(args);
+    if (!args.outcome_file.empty()) write_outcome(args.outcome_file, ran);
+    return static_cast<int>(ran);
   }
   long parent = 0;
   std::from_chars(argv[1].data(), argv[1].data() + argv[1].size(), parent);

@@ -73,6 +73,16 @@ auto bytes(std::uint64_t Settings::*field, std::uint64_t min, std::uint64_t max,
   };
 }
 
+/// A --slurm-* option checked by `check` (job_resources.hpp) into `field`.
+auto slurm_text(std::optional<std::string> JobResources::*field,
+                std::optional<std::string> (*check)(const std::string&)) {
+  return [=](Settings& s, const std::string& v) -> std::optional<std::string> {
+    if (auto bad = check(v)) return bad;
+    s.slurm.*field = v;
+    return std::nullopt;
+  };
+}
+
 const std::vector<Option>& options() {
   static const std::vector<Option> kOptions{
       {"--port", "KONTAKTD_PORT", "TCP port (default 8080; 0 = any free port)",
@@ -126,6 +136,28 @@ const std::vector<Option>& options() {
        integer_in(&Settings::io_threads, 1, 64)},
       {"--handler-threads", "KONTAKTD_HANDLER_THREADS",
        "threads running request handlers (default 4)", integer_in(&Settings::handler_threads, 1, 64)},
+      {"--executor", "KONTAKTD_EXECUTOR",
+       "where jobs run: local (worker processes, default) or slurm (sbatch; --workers jobs "
+       "submitted at once; the data dir on a path the compute nodes share)",
+       [](Settings& s, const std::string& v) -> std::optional<std::string> {
+         if (v != "local" && v != "slurm") return "local or slurm";
+         s.executor = v;
+         return std::nullopt;
+       }},
+      {"--slurm-partition", "KONTAKTD_SLURM_PARTITION",
+       "partition of Slurm jobs (default: the cluster's default)",
+       slurm_text(&JobResources::partition, check_partition)},
+      {"--slurm-cpus", "KONTAKTD_SLURM_CPUS", "CPUs per Slurm job, its solver threads (default 1)",
+       [](Settings& s, const std::string& v) -> std::optional<std::string> {
+         const auto n = whole_number(v);
+         if (auto bad = check_cpus(n.value_or(0))) return bad;
+         s.slurm.cpus = static_cast<int>(*n);
+         return std::nullopt;
+       }},
+      {"--slurm-mem", "KONTAKTD_SLURM_MEM", "memory of a Slurm job, sbatch --mem, e.g. 4G",
+       slurm_text(&JobResources::memory, check_memory)},
+      {"--slurm-time", "KONTAKTD_SLURM_TIME", "time limit of a Slurm job, sbatch --time, e.g. 1:00:00",
+       slurm_text(&JobResources::time, check_time)},
   };
   return kOptions;
 }
@@ -170,6 +202,8 @@ std::variant<Settings, std::string> parse_settings(
     }
     if (auto error = option->set(s, value)) return flag + ": " + *error;
   }
+  if (s.executor == "slurm" && s.job_time_limit > 0)
+    return std::string("--job-time-limit: the local executor's; Slurm jobs have --slurm-time");
   return s;
 }
 

@@ -9,6 +9,8 @@
 #include <variant>
 #include <vector>
 
+#include "server/job_resources.hpp"
+
 namespace kontakt::server {
 
 struct Settings {
@@ -28,6 +30,8 @@ struct Settings {
   double drain_timeout = 10;             ///< seconds running jobs get to finish on SIGTERM
   int io_threads = 2;
   int handler_threads = 4;
+  std::string executor = "local";        ///< local (worker processes) or slurm (sbatch)
+  JobResources slurm;                    ///< --slurm-*: the defaults of every Slurm job
 };
 
 /// The usage text, listing every option and its variable.

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <system_error>
 
 #include "server/result_publisher.hpp"
 #include "server/store_event_sink.hpp"
@@ -20,15 +19,21 @@ constexpr auto kIdlePoll = std::chrono::milliseconds(500);
 
 }  // namespace
 
-WorkerPool::WorkerPool(JobStore& store, const JobFiles& files, WorkerSettings settings)
-    : store_(store), files_(files), settings_(std::move(settings)) {}
+WorkerPool::WorkerPool(JobStore& store, const JobFiles& files, Executor& executor,
+                       WorkerSettings settings)
+    : store_(store), files_(files), executor_(executor), settings_(std::move(settings)) {}
 
 WorkerPool::~WorkerPool() {
-  if (!threads_.empty() || spawner_.joinable()) drain(std::chrono::milliseconds(0));
+  if (!threads_.empty()) drain(std::chrono::milliseconds(0));
+}
+
+void WorkerPool::adopt(std::vector<JobRecord> jobs) {
+  std::lock_guard lock(mutex_);
+  for (JobRecord& job : jobs) adopted_.push_back(std::move(job));
 }
 
 void WorkerPool::start() {
-  spawner_ = std::thread([this] { spawner_loop(); });
+  executor_.start();
   for (int i = 0; i < settings_.workers; ++i) threads_.emplace_back([this] { worker_loop(); });
 }
 
@@ -55,53 +60,32 @@ void WorkerPool::drain(std::chrono::milliseconds grace) {
   std::unique_lock lock(mutex_);
   stopping_ = true;
   wake_.notify_all();
-  wake_.wait_for(lock, grace, [this] { return running_.empty(); });
+  // Runs that outlive the daemon are let go at once: they go on, and the next daemon adopts them.
+  if (!executor_.outlives_daemon())
+    wake_.wait_for(lock, grace, [this] { return running_.empty(); });
   for (auto& [id, stop] : running_) stop->request(StopCause::Drain);
   lock.unlock();
   for (auto& t : threads_) t.join();
   threads_.clear();
-  // Only now: the running jobs' processes die with the spawner's thread.
-  {
-    std::lock_guard guard(mutex_);
-    spawner_retired_ = true;
-  }
-  spawn_.notify_all();
-  if (spawner_.joinable()) spawner_.join();
-  waiting_.clear();  // killed and reaped
+  // Only now: the running jobs' processes die with the local executor's spawner thread.
+  executor_.shutdown();
 }
 
-void WorkerPool::spawner_loop() {
-  const std::size_t keep = static_cast<std::size_t>(settings_.workers) + 1;
-  std::unique_lock lock(mutex_);
-  while (!spawner_retired_) {
-    if (waiting_.size() >= keep || stopping_) {
-      spawn_.wait(lock);
-      continue;
-    }
-    lock.unlock();
-    std::unique_ptr<WorkerProcess> process;
-    try {
-      process = std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
-    } catch (const std::system_error& e) {  // out of processes or descriptors: retry later
-      std::fprintf(stderr, "kontaktd: cannot start a job process: %s\n", e.what());
-    }
-    lock.lock();
-    if (process) waiting_.push_back(std::move(process));
-    else spawn_.wait_for(lock, kIdlePoll);
-  }
-}
-
-std::unique_ptr<WorkerProcess> WorkerPool::take_process() {
+std::optional<std::pair<JobRecord, bool>> WorkerPool::next_job() {
   {
     std::lock_guard lock(mutex_);
-    while (!waiting_.empty()) {
-      std::unique_ptr<WorkerProcess> process = std::move(waiting_.back());
-      waiting_.pop_back();
-      spawn_.notify_one();
-      if (process->alive()) return process;  // else: killed while it waited
+    if (!adopted_.empty()) {
+      JobRecord job = std::move(adopted_.front());
+      adopted_.pop_front();
+      return std::pair{std::move(job), true};
     }
   }
-  return std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
+  try {
+    if (auto job = store_.claim_next()) return std::pair{std::move(*job), false};
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kontaktd: cannot claim a job: %s\n", e.what());
+  }
+  return std::nullopt;
 }
 
 void WorkerPool::worker_loop() {
@@ -118,69 +102,88 @@ void WorkerPool::worker_loop() {
         std::lock_guard lock(mutex_);
         if (stopping_) return;
       }
-      std::optional<JobRecord> job;
-      try {
-        job = store_.claim_next();
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "kontaktd: cannot claim a job: %s\n", e.what());
-      }
+      const auto job = next_job();
       if (!job) break;
-      run(*job);
+      run(job->first, job->second);
     }
   }
 }
 
-void WorkerPool::run(const JobRecord& job) {
+JobLaunch WorkerPool::launch_of(const JobRecord& job) const {
+  return {.id = job.id,
+          .job_dir = files_.job_dir(job.id),
+          .args = {.mode = worker::Mode::Run,
+                   .deck = files_.input_dir(job.id) / job.main_file,
+                   .scheme = job.scheme,
+                   .limits = settings_.limits,
+                   .parent_pid = getpid(),
+                   .out_dir = files_.work_dir(job.id),
+                   .job_name = fs::path(job.main_file).stem().string(),
+                   .threads = settings_.threads_per_job},
+          .resources = job.resources};
+}
+
+void WorkerPool::run(const JobRecord& job, bool adopted) {
   const auto stop = std::make_shared<StopSignal>();
   {
     std::lock_guard lock(mutex_);
     running_[job.id] = stop;
     if (stopping_) stop->request(StopCause::Drain);  // claimed while drain() began
   }
-  // A cancel that came between the claim and the line above found no process to stop.
+  // A cancel that came between the claim and the line above found no run to stop.
   if (const auto now = store_.find_job(job.id); now && now->status == JobStatus::Canceling)
     stop->request(StopCause::Request);
 
-  const fs::path work = files_.work_dir(job.id);
-  std::error_code ec;
-  fs::remove_all(work, ec);  // a requeued job starts from a clean slate
-  fs::remove_all(files_.results_dir(job.id), ec);
+  JobLaunch launch = launch_of(job);
+  if (adopted) launch.events_stored = static_cast<std::size_t>(store_.count_run_events(job.id));
+  if (!adopted) {  // a requeued job starts from a clean slate
+    std::error_code ec;
+    fs::remove_all(launch.args.out_dir, ec);
+    fs::remove_all(files_.results_dir(job.id), ec);
+  }
   StoreEventSink sink(store_, job.id);
   std::optional<ProcessEnd> end;
-  std::string start_error;
+  std::optional<JobVerdict> refused;
+  bool never_submitted = false;
   try {
-    const worker::Args args{.mode = worker::Mode::Run,
-                            .deck = files_.input_dir(job.id) / job.main_file,
-                            .scheme = job.scheme,
-                            .limits = settings_.limits,
-                            .parent_pid = getpid(),
-                            .out_dir = work,
-                            .job_name = fs::path(job.main_file).stem().string(),
-                            .threads = settings_.threads_per_job};
-    std::unique_ptr<WorkerProcess> process = take_process();
-    if (!process->start(args)) {  // died between the check and now: a fresh one
-      process = std::make_unique<WorkerProcess>(settings_.worker_exe, settings_.threads_per_job);
-      if (!process->start(args)) throw std::runtime_error("the job process ended before its job");
+    std::unique_ptr<Execution> execution =
+        adopted ? executor_.attach(launch) : executor_.submit(launch);
+    if (execution) {
+      const double time_limit =
+          executor_.daemon_enforces_time_limit() ? settings_.job_time_limit : 0;
+      end = supervise_job(*execution, sink, *stop,
+                          {.time_limit = time_limit, .grace = settings_.kill_grace},
+                          launch.args.out_dir);
+    } else {
+      never_submitted = true;
     }
-    end = supervise_job(*process, sink, *stop,
-                        {.time_limit = settings_.job_time_limit, .grace = settings_.kill_grace},
-                        work);
+  } catch (const ExecutorRefused& e) {  // e.g. sbatch: no such partition, too much memory
+    refused = JobVerdict{.status = JobStatus::Failed, .reason = "executor_refused",
+                         .message = e.what()};
   } catch (const std::exception& e) {  // no process (descriptor or process limits): fail the job
-    start_error = e.what();
+    refused = JobVerdict{.status = JobStatus::Failed, .reason = "internal",
+                         .message = std::string("cannot start the job process: ") + e.what()};
   }
   {
     std::lock_guard lock(mutex_);
     running_.erase(job.id);
   }
   wake_.notify_all();  // drain() waits for running_ to empty
-  if (!end) {
-    std::fprintf(stderr, "kontaktd: job %s: cannot run its process: %s\n", job.id.c_str(),
-                 start_error.c_str());
-    conclude(job, {.status = JobStatus::Failed, .reason = "internal",
-                   .message = "cannot start the job process: " + start_error},
+  if (never_submitted) {  // adopted, but the executor never had it: run it again
+    conclude(job, {.action = JobVerdict::Action::Requeue}, sink.summary());
+    job_queued();
+    return;
+  }
+  if (refused) {
+    std::fprintf(stderr, "kontaktd: job %s: %s\n", job.id.c_str(), refused->message.c_str());
+    conclude(job, stop->cause() == StopCause::Request
+                      ? JobVerdict{.status = JobStatus::Canceled, .reason = "canceled",
+                                   .message = "canceled"}
+                      : *refused,
              sink.summary());
     return;
   }
+  if (end->detached) return;  // goes on in the executor; the next daemon adopts it
   if (end->sink_error)
     std::fprintf(stderr, "kontaktd: job %s: events not stored: %s\n", job.id.c_str(),
                  end->sink_error->c_str());

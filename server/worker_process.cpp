@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -58,6 +59,8 @@ void WorkerProcess::end_requests() {
   if (request_ >= 0) close(request_);
   request_ = -1;
 }
+
+bool WorkerProcess::stop(bool graceful) { return send(graceful ? SIGTERM : SIGKILL); }
 
 bool WorkerProcess::start(const worker::Args& args) {
   if (request_ < 0) return false;

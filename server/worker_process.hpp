@@ -3,7 +3,7 @@
 // loading of the solver's ~50 libraries (tens of ms of CPU) happens while it waits, and
 // start() hands it its work when there is some. A run is its last piece of work; a check
 // process takes one deck after the other until its channel closes. Deck checks and job runs
-// both go through it.
+// both go through it; a job run is the local executor's Execution.
 #pragma once
 
 #include <chrono>
@@ -11,17 +11,18 @@
 #include <optional>
 
 #include "server/child_process.hpp"
+#include "server/execution.hpp"
 #include "server/line_splitter.hpp"
 #include "server/worker_protocol.hpp"
 
 namespace kontakt::server {
 
-class WorkerProcess {
+class WorkerProcess final : public Execution {
  public:
   /// Starts `exe job-worker standby` for work with `threads` solver threads (its BLAS starts
   /// that many, no more); throws std::system_error when it cannot.
   WorkerProcess(const std::filesystem::path& exe, int threads);
-  ~WorkerProcess();  ///< kills a process still running (ChildProcess)
+  ~WorkerProcess() override;  ///< kills a process still running (ChildProcess)
   WorkerProcess(const WorkerProcess&) = delete;
   WorkerProcess& operator=(const WorkerProcess&) = delete;
 
@@ -36,11 +37,13 @@ class WorkerProcess {
   /// readable; hands every complete report line to `on_line`. Returns the exit status once the
   /// process has ended and everything it reported was read.
   std::optional<ExitStatus> poll(std::chrono::milliseconds timeout, const LineHandler& on_line,
-                                 int wake_fd = -1);
+                                 int wake_fd = -1) override;
   /// Sends a signal; false when the process has ended.
   bool send(int signal) { return child_->send(signal); }
+  /// SIGTERM (graceful) or SIGKILL.
+  bool stop(bool graceful) override;
   /// Report lines dropped: overlong, or cut off by the process's end.
-  std::size_t n_dropped_lines() const { return lines_.n_dropped(); }
+  std::size_t n_dropped_lines() const override { return lines_.n_dropped(); }
 
  private:
   int report_ = -1;   ///< our end of the report pipe; -1 once it reached end of file

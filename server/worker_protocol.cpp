@@ -1,6 +1,7 @@
 #include "server/worker_protocol.hpp"
 
 #include <charconv>
+#include <nlohmann/json.hpp>
 
 namespace kontakt::server::worker {
 
@@ -23,6 +24,17 @@ std::string byte_size(std::uint64_t bytes) {
   return std::to_string(bytes) + " bytes";
 }
 
+std::string outcome_text(Exit exit) {
+  return nlohmann::json{{"exit_code", static_cast<int>(exit)}}.dump() + "\n";
+}
+
+std::optional<int> parse_outcome(const std::string& text) {
+  const auto j = nlohmann::json::parse(text, nullptr, false);
+  if (!j.is_object() || !j.contains("exit_code") || !j["exit_code"].is_number_integer())
+    return std::nullopt;
+  return j["exit_code"].get<int>();
+}
+
 std::vector<std::string> to_argv(const Args& a) {
   std::vector<std::string> argv{a.mode == Mode::Check ? "check" : "run", "--deck", a.deck.string(),
                                 "--parent", std::to_string(a.parent_pid)};
@@ -34,6 +46,8 @@ std::vector<std::string> to_argv(const Args& a) {
   if (a.mode == Mode::Run)
     argv.insert(argv.end(), {"--out", a.out_dir.string(), "--name", a.job_name, "--threads",
                              std::to_string(a.threads)});
+  if (a.mode == Mode::Run && !a.outcome_file.empty())
+    argv.insert(argv.end(), {"--outcome", a.outcome_file.string()});
   return argv;
 }
 
@@ -51,6 +65,8 @@ std::variant<Args, std::string> parse_args(const std::vector<std::string>& argv)
       a.scheme = value;
     } else if (flag == "--out") {
       a.out_dir = value;
+    } else if (flag == "--outcome") {
+      a.outcome_file = value;
     } else if (flag == "--name") {
       a.job_name = value;
     } else if (flag == "--parent" || flag == "--threads" || flag == "--memory-limit" ||

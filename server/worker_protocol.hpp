@@ -56,7 +56,14 @@ struct Args {
   std::filesystem::path out_dir{};
   std::string job_name{};
   int threads = 1;
+  /// When set, the run's end is written here too (for executors that are not its parent).
+  std::filesystem::path outcome_file{};
 };
+
+/// The outcome file of a run: `{"exit_code": N}` (an Exit), written once the run has ended.
+std::string outcome_text(Exit exit);
+/// The exit code in an outcome file; nullopt when it is not one (cut short, garbled).
+std::optional<int> parse_outcome(const std::string& text);
 
 /// The arguments after kCommand.
 std::vector<std::string> to_argv(const Args& args);

@@ -59,6 +59,11 @@ std::optional<HttpResponse> read_labels(const json& j, std::map<std::string, std
   return std::nullopt;
 }
 
+std::optional<HttpResponse> read_resources_member(const json& j, JobResources& r) {
+  if (const auto bad = read_resources(j, r)) return invalid_parameter(bad->field, bad->message);
+  return std::nullopt;
+}
+
 namespace {
 
 /// Fills `s` from a JSON body; returns a 400 when it is malformed.
@@ -77,6 +82,8 @@ std::optional<HttpResponse> read_json_body(const std::string& body, Submission& 
     else if (std::string(field) == "scheme") s.scheme = v;
     else s.main = v;
   }
+  if (j.contains("resources") && !j["resources"].is_null())
+    if (auto bad = read_resources_member(j["resources"], s.resources)) return bad;
   if (j.contains("labels")) return read_labels(j["labels"], s.labels);
   return std::nullopt;
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "server/http_types.hpp"
+#include "server/job_resources.hpp"
 
 namespace kontakt::server::handlers {
 
@@ -17,6 +18,7 @@ struct Submission {
   std::string deck;        ///< raw .inp text or zip bytes
   std::optional<std::string> name, scheme, main;
   std::map<std::string, std::string> labels;
+  JobResources resources;  ///< JSON bodies: "resources" for the executor (job_resources.hpp)
 };
 
 /// Reads and validates every option into `s`; a 400 (naming the field) or 415 response when
@@ -31,6 +33,9 @@ std::optional<HttpResponse> check_options(const std::optional<std::string>& name
 /// Adds the members of a JSON "labels" object (strings) to `labels`; a 400 when malformed.
 std::optional<HttpResponse> read_labels(const nlohmann::json& j,
                                         std::map<std::string, std::string>& labels);
+
+/// Reads a "resources" object into `r`; a 400 naming the bad member.
+std::optional<HttpResponse> read_resources_member(const nlohmann::json& j, JobResources& r);
 
 /// The request's media type: Content-Type without parameters, lower case; text/plain when
 /// absent.

@@ -20,9 +20,11 @@ constexpr std::size_t kMaxIdempotencyKey = 255;
 
 /// Same key, same submission <=> same fingerprint.
 std::string fingerprint_of(const Submission& s) {
-  const json options{{"media_type", s.media_type}, {"name", s.name.value_or("")},
-                     {"scheme", s.scheme.value_or("")}, {"main", s.main.value_or("")},
-                     {"labels", s.labels}};
+  json options{{"media_type", s.media_type}, {"name", s.name.value_or("")},
+               {"scheme", s.scheme.value_or("")}, {"main", s.main.value_or("")},
+               {"labels", s.labels}};
+  // Only when given: the keys of submissions from before resources existed stay valid.
+  if (const json r = to_json(s.resources); !r.empty()) options["resources"] = r;
   return sha256_hex(json_text(options) + '\n' + sha256_hex(s.deck));
 }
 
@@ -144,8 +146,12 @@ std::optional<HttpResponse> read_resubmission(const HttpRequest& request, NewJob
     } else if (field == "labels") {
       job.labels.clear();  // they replace the source job's
       if (auto bad = read_labels(value, job.labels)) return bad;
+    } else if (field == "resources") {
+      job.resources = {};  // they replace the source job's
+      if (!value.is_null())
+        if (auto bad = read_resources_member(value, job.resources)) return bad;
     } else {
-      return invalid_parameter(field, "unknown member (scheme, name, labels)");
+      return invalid_parameter(field, "unknown member (scheme, name, labels, resources)");
     }
   }
   return check_options(job.name, job.scheme, job.labels);
@@ -162,6 +168,7 @@ HttpResponse submit_job(ApiContext& ctx, const HttpRequest& request) {
   job.name = s.name.value_or("");
   job.scheme = s.scheme;
   job.labels = s.labels;
+  job.resources = s.resources;
   job.fingerprint = fingerprint_of(s);
   return queue_new_job(ctx, std::move(job), [&](NewJob& j) { return store_upload(ctx, s, j); });
 }
@@ -173,12 +180,14 @@ HttpResponse resubmit_job(ApiContext& ctx, const HttpRequest& request, const std
   job.name = source->name;
   job.scheme = source->scheme;
   job.labels = source->labels;
+  job.resources = source->resources;
   job.main_file = source->main_file;
   if (auto bad = read_resubmission(request, job)) return *bad;
   if (auto bad = read_key(request, job.idempotency_key)) return *bad;
   job.id = new_job_id();
-  const json options{{"resubmit_of", source_id}, {"name", job.name},
-                     {"scheme", job.scheme.value_or("")}, {"labels", job.labels}};
+  json options{{"resubmit_of", source_id}, {"name", job.name},
+               {"scheme", job.scheme.value_or("")}, {"labels", job.labels}};
+  if (const json r = to_json(job.resources); !r.empty()) options["resources"] = r;
   job.fingerprint = sha256_hex(options.dump());
   return queue_new_job(ctx, std::move(job), [&](NewJob& j) -> std::optional<HttpResponse> {
     std::error_code ec;

@@ -16,6 +16,10 @@
    cancel request to the job's terminal status event (with the baseline too: a build that
    runs jobs in threads lets the factorisation run to its end).
 
+With --executor slurm, a second daemon of this build runs its jobs through a private Slurm
+started here (tests/slurm/slurm_cluster.py: munged, slurmctld, slurmd on this host, needs root)
+and is measured in parts 1 and 2 side by side with the local executor, in the same run.
+
 Goals (issues 5 and 10): overhead under 50 ms per job, p99 status latency under 10 ms, cancel
 within the kill grace (default 2 s) however long the factorisation.
 """
@@ -34,6 +38,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "server"))
+sys.path.insert(0, os.path.join(HERE, "..", "slurm"))
 import decks  # noqa: E402
 import kontaktd_harness as harness  # noqa: E402
 import make_block  # noqa: E402
@@ -160,6 +165,11 @@ def main():
     p.add_argument("--baseline-kontaktd", help="another kontaktd build to compare with (e.g. an older commit's)")
     p.add_argument("--cancel-dofs", type=int, default=200000, help="size of the block canceled in part 4")
     p.add_argument("--smoke", action="store_true", help="small sizes, for CI")
+    p.add_argument("--executor", choices=("local", "slurm"), default="local",
+                   help="slurm: also measure a daemon with --executor slurm on a private Slurm "
+                        "(parts 1 and 2), side by side with the local executor")
+    p.add_argument("--slurm-workers", type=int, default=4,
+                   help="--workers of the slurm daemon: jobs in Slurm at once (default 4)")
     args = p.parse_args()
     if args.smoke:
         args.jobs, args.runs, args.wrk_seconds, args.cancel_dofs = 20, 5, 2, 30000
@@ -171,21 +181,32 @@ def main():
     daemon_args = ["--workers", "2", "--threads-per-job", "1"]
     d = harness.Daemon(args.kontaktd, args=daemon_args).start()
     baseline = harness.Daemon(args.baseline_kontaktd, args=daemon_args).start() if args.baseline_kontaktd else None
+    cluster = slurm_d = None
     try:
+        if args.executor == "slurm":
+            from slurm_cluster import LocalSlurm
+            cluster = LocalSlurm().__enter__()
+            slurm_d = harness.Daemon(args.kontaktd, env={"SLURM_CONF": cluster.conf},
+                                     args=["--executor", "slurm", "--workers",
+                                           str(args.slurm_workers)]).start()
         cli = cli_latency(args.kontakt, deck_path, work, args.runs)
         print(f"1. tiny deck, median of {args.runs}: kontakt solve {1e3 * statistics.median(cli):.1f} ms "
               f"(process wall time)")
-        samples = {"kontaktd": [], "baseline": []}
+        samples = {"kontaktd": [], "baseline": [], "slurm": []}
         for _ in range(args.runs):  # alternating, so both see the same machine
             samples["kontaktd"].append(daemon_sample(d, deck))
             if baseline:
                 samples["baseline"].append(daemon_sample(baseline, deck))
+            if slurm_d:
+                samples["slurm"].append(daemon_sample(slurm_d, deck))
+        labels = {"kontaktd": "this build", "baseline": "baseline build",
+                  "slurm": "this build, --executor slurm"}
         for name, rows in samples.items():
             if not rows:
                 continue
             total = sorted(1e3 * t for t, _ in rows)
             overhead = sorted(1e3 * o for _, o in rows)
-            label = "this build" if name == "kontaktd" else "baseline build"
+            label = labels[name]
             print(f"   daemon, {label}: submit-to-done {statistics.median(total):.1f} ms "
                   f"(p90 {total[int(0.9 * len(total))]:.1f} ms); overhead (all but the solver's own "
                   f"time) {statistics.median(overhead):.1f} ms median, {overhead[-1]:.1f} ms max "
@@ -193,6 +214,10 @@ def main():
         n, submitted, total = throughput(d, deck, args.jobs)
         print(f"2. {n} tiny jobs, 2 workers: submitted in {submitted:.2f} s, all done in {total:.2f} s "
               f"= {n / total:.1f} jobs/s")
+        if slurm_d:
+            n, submitted, total = throughput(slurm_d, deck, args.jobs)
+            print(f"   --executor slurm (2 CPUs, {args.slurm_workers} jobs in Slurm at once): submitted in "
+                  f"{submitted:.2f} s, all done in {total:.2f} s = {n / total:.1f} jobs/s")
         job_id = d.submit(deck)[2]["id"]
         d.wait(job_id)
         for connections in (4, 16):
@@ -217,6 +242,10 @@ def main():
         d.stop()
         if baseline:
             baseline.stop()
+        if slurm_d:
+            slurm_d.stop()
+        if cluster:
+            cluster.stop()
         shutil.rmtree(work, ignore_errors=True)
     return 0
 

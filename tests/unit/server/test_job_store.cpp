@@ -261,3 +261,33 @@ TEST_F(JobStoreTest, AChangeWakesItsWaitersOnceAndOnlyThoseStillThere) {
 }
 
 }  // namespace kontakt::server
+
+namespace kontakt::server {
+
+TEST_F(JobStoreTest, ResourcesAreKeptWithTheJob) {
+  NewJob job = new_job("r");
+  job.resources = {.partition = "debug", .cpus = 4, .memory = "2G", .time = "10"};
+  store.insert_job(job);
+  const auto found = store.find_job(job.id);
+  ASSERT_TRUE(found);
+  EXPECT_EQ(to_json(found->resources), to_json(job.resources));
+  const auto plain = store.insert_job(new_job("p")).second;
+  EXPECT_EQ(to_json(plain.resources), nlohmann::json::object());
+}
+
+/// A daemon that adopts a run after a restart skips the events the store has of that run:
+/// only the current run's solver events count, not its status changes or an earlier run's.
+TEST_F(JobStoreTest, CountsTheCurrentRunsSolverEvents) {
+  const auto job = store.insert_job(new_job("c")).second;
+  store.claim_next();
+  store.append_event(job.id, "iteration", "{}", std::nullopt);
+  store.append_event(job.id, "iteration", "{}", std::nullopt);
+  EXPECT_EQ(store.count_run_events(job.id), 2);
+  store.retry(job.id, "killed");
+  store.claim_next();
+  EXPECT_EQ(store.count_run_events(job.id), 0);
+  store.append_event(job.id, "step", "{}", std::nullopt);
+  EXPECT_EQ(store.count_run_events(job.id), 1);
+}
+
+}  // namespace kontakt::server

@@ -1,0 +1,157 @@
+#include "server/slurm_protocol.hpp"
+
+#include <cctype>
+#include <sstream>
+
+namespace kontakt::server::slurm {
+
+namespace {
+
+/// One word for sh, whatever it holds.
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// The value of `key=` in a line of `key=value` words (scontrol, jobcomp); empty when absent.
+std::string word_value(const std::string& text, const std::string& key) {
+  std::size_t at = 0;
+  while ((at = text.find(key + "=", at)) != std::string::npos) {
+    if (at == 0 || std::isspace(static_cast<unsigned char>(text[at - 1]))) {
+      const std::size_t start = at + key.size() + 1;
+      std::size_t end = start;
+      while (end < text.size() && !std::isspace(static_cast<unsigned char>(text[end]))) ++end;
+      return text.substr(start, end - start);
+    }
+    at += key.size();
+  }
+  return {};
+}
+
+/// "3:0" (exit code 3) or "0:9" (signal 9).
+std::optional<ExitStatus> exit_code(const std::string& v) {
+  const std::size_t colon = v.find(':');
+  if (v.empty() || colon == std::string::npos) return std::nullopt;
+  try {
+    const int code = std::stoi(v.substr(0, colon)), signal = std::stoi(v.substr(colon + 1));
+    if (signal != 0) return ExitStatus{.signaled = true, .code = signal};
+    return ExitStatus{.signaled = false, .code = code};
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+JobState from_words(const std::string& text) {
+  JobState s;
+  s.state = word_value(text, "JobState");
+  s.reason = word_value(text, "Reason");
+  s.exit = exit_code(word_value(text, "ExitCode"));
+  return s;
+}
+
+}  // namespace
+
+std::string batch_script(const std::filesystem::path& exe, const worker::Args& args,
+                         const RunFiles& files, const std::string& job_id) {
+  std::string command = "exec " + quoted(exe.string()) + " " + worker::kCommand;
+  for (const std::string& a : worker::to_argv(args)) command += " " + quoted(a);
+  return "#!/bin/sh\n"
+         "# kontaktd job " + job_id + ": the solver's run as a Slurm batch job; its events go\n"
+         "# to events.ndjson, its end to outcome.json (server/slurm_executor.hpp).\n"
+         "export OPENBLAS_NUM_THREADS=" + std::to_string(args.threads) + "\n" +
+         command + " 3>>" + quoted(files.events().string()) + "\n";
+}
+
+std::vector<std::string> sbatch_argv(const std::string& job_id, const RunFiles& files,
+                                     const std::filesystem::path& work_dir,
+                                     const JobResources& r, int grace_seconds) {
+  std::vector<std::string> argv{"sbatch", "--parsable",
+                                "--job-name=kontakt-" + job_id.substr(0, 12),
+                                "--chdir=" + work_dir.string(),
+                                "--output=" + files.output_pattern().string(),
+                                "--signal=B:TERM@" + std::to_string(grace_seconds),
+                                "--comment=" + job_id, "--no-requeue"};
+  if (r.partition) argv.push_back("--partition=" + *r.partition);
+  argv.push_back("--cpus-per-task=" + std::to_string(r.cpus.value_or(1)));
+  if (r.memory) argv.push_back("--mem=" + *r.memory);
+  if (r.time) argv.push_back("--time=" + *r.time);
+  argv.push_back(files.script().string());
+  return argv;
+}
+
+std::optional<std::string> parse_sbatch_id(const std::string& out) {
+  std::string id = out.substr(0, out.find_first_of(";\n"));
+  if (id.empty() || id.size() > 20) return std::nullopt;
+  for (char c : id)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return std::nullopt;
+  return id;
+}
+
+std::map<std::string, JobState> parse_squeue(const std::string& out) {
+  std::map<std::string, JobState> jobs;
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t a = line.find('|'), b = line.find('|', a + 1),
+                      c = line.find('|', b == std::string::npos ? b : b + 1);
+    if (a == std::string::npos || b == std::string::npos || c == std::string::npos) continue;
+    jobs[line.substr(0, a)] = {.state = line.substr(a + 1, b - a - 1),
+                               .reason = line.substr(b + 1, c - b - 1),
+                               .comment = line.substr(c + 1),
+                               .exit = std::nullopt};
+  }
+  return jobs;
+}
+
+std::optional<JobState> parse_scontrol_job(const std::string& out) {
+  JobState s = from_words(out);
+  if (s.state.empty()) return std::nullopt;
+  return s;
+}
+
+std::optional<JobState> find_in_jobcomp(const std::string& log, const std::string& slurm_id) {
+  std::optional<JobState> found;
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("JobId=" + slurm_id + " ", 0) == 0) found = from_words(line);
+  return found;
+}
+
+std::optional<std::string> jobcomp_file(const std::string& config) {
+  std::optional<std::string> type, location;
+  std::istringstream lines(config);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    std::string key = line.substr(0, eq), value = line.substr(eq + 1);
+    while (!key.empty() && key.back() == ' ') key.pop_back();
+    value.erase(0, value.find_first_not_of(' '));
+    if (key == "JobCompType") type = value;
+    if (key == "JobCompLoc") location = value;
+  }
+  if (type != "jobcomp/filetxt" || !location || location->empty()) return std::nullopt;
+  return location;
+}
+
+bool is_finished(const std::string& state) {
+  for (const char* s : {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "PREEMPTED",
+                        "BOOT_FAIL", "DEADLINE", "OUT_OF_MEMORY", "REVOKED", "SPECIAL_EXIT"})
+    if (state == s) return true;
+  return false;
+}
+
+ExecutorFailure failure_from(const std::string& slurm_id, const JobState& s,
+                             const std::string& output_tail) {
+  std::string said = "Slurm job " + slurm_id + " ended " + s.state;
+  if (!s.reason.empty() && s.reason != "None") said += " (" + s.reason + ")";
+  if (s.exit) said += " with " + describe(*s.exit);
+  said += " and left no outcome";
+  if (!output_tail.empty()) said += "; its output ends: " + output_tail;
+  std::string reason = "worker_lost";
+  if (s.state == "TIMEOUT" || s.state == "DEADLINE") reason = "time_limit";
+  else if (s.state == "OUT_OF_MEMORY") reason = "memory_limit";
+  else if (s.state == "FAILED" && s.exit && s.exit->signaled) reason = "solver_crashed";
+  return {.reason = reason, .message = said};
+}
+
+}  // namespace kontakt::server::slurm
