@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 
 #include "core/error.hpp"
 #include "output/hdf5_writer.hpp"
+#include "output/time_stamp.hpp"
 
 #ifndef KONTAKT_VERSION
 #define KONTAKT_VERSION "unknown"
@@ -40,27 +40,6 @@ std::string user_line(const std::string& key, const std::string& value) {
 std::string count_line(char kind, long long count) {
   return std::string("    ") + kind + "C" + std::string(18, ' ') + fixed("%12lld", count) +
          fixed("%38lld", 1) + "\n";
-}
-
-std::string date_today() {
-  static constexpr const char* kMonths[] = {"january", "february", "march",     "april",
-                                            "may",     "june",     "july",      "august",
-                                            "september", "october", "november", "december"};
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char b[48];
-  std::snprintf(b, sizeof b, "%02d.%s.%04d", tm.tm_mday, kMonths[tm.tm_mon], tm.tm_year + 1900);
-  return b;
-}
-
-std::string clock_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char b[16];
-  std::strftime(b, sizeof b, "%H:%M:%S", &tm);
-  return b;
 }
 
 /// ` -5` component line: name in 8 columns, then 1, the component type and the two indices.
@@ -196,8 +175,8 @@ FrdWriter::FrdWriter(const model::Model& model, std::filesystem::path path)
 
   std::string h = "    1C\n";
   h += user_line("USER", "");
-  h += user_line("DATE", date_today());
-  h += user_line("TIME", clock_now());
+  h += user_line("DATE", frd_date_today());
+  h += user_line("TIME", time_stamp("%H:%M:%S", false));
   h += user_line("HOST", "");
   h += user_line("PGM", "Kontakt");
   h += user_line("VERSION", std::string("Version ") + KONTAKT_VERSION);

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
 #include "material/von_mises.hpp"
+#include "output/time_stamp.hpp"
 #include "output/vtk_cells.hpp"
 
 #ifndef KONTAKT_VERSION
@@ -146,15 +146,6 @@ void attr_i64_array(hid_t obj, const std::string& name, const std::vector<std::i
   Handle a(H5Acreate2(obj, name.c_str(), H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT),
            H5Aclose, "create attribute " + name);
   check(H5Awrite(a, H5T_NATIVE_INT64, v.data()), "write attribute " + name);
-}
-
-std::string rfc3339_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char b[32];
-  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return b;
 }
 
 /// HDF5 link names may not contain '/'; sets are stored under a sanitized name.
@@ -316,7 +307,7 @@ void warm_up_hdf5() {
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "fapl");
   check(H5Pset_fapl_core(fapl, 1 << 16, false), "core driver");  // no backing file
   Handle file(H5Fcreate("warm-up", H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, "warm-up file");
-  attr_string(file, "created", rfc3339_now());
+  attr_string(file, "created", time_stamp("%Y-%m-%dT%H:%M:%SZ", true));
   const std::vector<double> values(64, 1.0);
   write_f64(file, "values", values.data(), {values.size()});
 }
@@ -347,7 +338,7 @@ Hdf5Writer::Hdf5Writer(const model::Model& model, std::filesystem::path dir,
   attr_string(f, "format_version", "1.0");
   attr_string(f, "solver", "kontakt");
   attr_string(f, "solver_version", KONTAKT_VERSION);
-  attr_string(f, "created", rfc3339_now());
+  attr_string(f, "created", time_stamp("%Y-%m-%dT%H:%M:%SZ", true));
   write_mesh();
   Handle frames = make_group(f, "frames");
   Handle history = make_group(f, "history");
