@@ -148,6 +148,8 @@ ChildProcess::~ChildProcess() {
 
 bool ChildProcess::send(int signal) {
   if (status_) return false;
+  // The group id is the child's pid, which cannot be reused while the child is not reaped.
+  if (signal == SIGKILL) killpg(pid_, SIGKILL);
   return send_to_pidfd(pidfd_, signal) == 0;
 }
 

@@ -47,7 +47,8 @@ class ChildProcess {
   pid_t pid() const { return pid_; }
   /// Readable (poll) once the process has ended.
   int pidfd() const { return pidfd_; }
-  /// Sends `signal` to the process; false when it has already ended.
+  /// Sends `signal` to the process; false when it has already ended. SIGKILL goes to its whole
+  /// process group, so nothing the child started outlives a hard stop.
   bool send(int signal);
   /// The status once the process has ended (it is reaped then); nullopt while it runs.
   std::optional<ExitStatus> try_wait();
