@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 
 #include "contact/contact_extrapolation.hpp"
 #include "contact/master_search.hpp"
@@ -131,16 +132,19 @@ bool ContactSystem::wants_line_search(int iteration) const {
          sums_.active > 0;
 }
 
+FaceGeometry ContactSystem::slave_geometry(const Unit& unit, const VecX& u) const {
+  if (unit.node < 0) return face_geometry(pairs_[unit.pair].slave.faces[unit.face], model_.mesh.coords, u);
+  FaceGeometry node;
+  node.topo = element::Topology::Tri3;  // unused for a node
+  node.x.resize(1, 3);
+  node.x.row(0) = model_.mesh.coords.row(unit.node) + u.segment<3>(3 * unit.node).transpose();
+  return node;
+}
+
 ContactSystem::UnitGeometry ContactSystem::geometry(const Unit& unit, const VecX& u) const {
   const Pair& pair = pairs_[unit.pair];
   UnitGeometry g;
-  if (unit.node >= 0) {
-    g.slave.topo = element::Topology::Tri3;  // unused for a node
-    g.slave.x.resize(1, 3);
-    g.slave.x.row(0) = model_.mesh.coords.row(unit.node) + u.segment<3>(3 * unit.node).transpose();
-  } else {
-    g.slave = face_geometry(pair.slave.faces[unit.face], model_.mesh.coords, u);
-  }
+  g.slave = slave_geometry(unit, u);
   g.masters.reserve(unit.candidates.size());
   for (int m : unit.candidates) g.masters.push_back(face_geometry(pair.master.faces[m], model_.mesh.coords, u));
   return g;
@@ -170,34 +174,70 @@ Real ContactSystem::point_area(const Unit& unit, const Point& pt, const UnitGeom
   return nodal_area(pairs_[unit.pair], unit.node, u);
 }
 
+std::vector<AabbTree> ContactSystem::master_trees(const VecX& u) const {
+  std::vector<AabbTree> trees;
+  for (const Pair& pair : pairs_) {
+    std::vector<Box> boxes;
+    for (const auto& f : pair.master.faces)
+      boxes.push_back(face_box(face_geometry(f, model_.mesh.coords, u)));
+    trees.emplace_back(boxes);
+  }
+  return trees;
+}
+
+ContactSystem::SearchRegion ContactSystem::search_region(const Unit& unit, const FaceGeometry& slave,
+                                                         const VecX& u) const {
+  SearchRegion r;
+  if (unit.node >= 0) {
+    const Pair& pair = pairs_[unit.pair];
+    r.box.add(slave.x.row(0).transpose());
+    for (const auto& [f, local] : pair.node_faces[unit.node])
+      r.size = std::max(r.size, face_size(face_geometry(pair.area_faces[f], model_.mesh.coords, u)));
+  } else {
+    r.box = face_box(slave);
+    r.size = face_size(slave);
+    r.slave_normal = surface_point(slave, face_centre(slave.topo)).normal;
+  }
+  return r;
+}
+
+bool ContactSystem::faces_slave(const FaceGeometry& master, const SearchRegion& region) {
+  return region.slave_normal.isZero() ||
+         surface_point(master, face_centre(master.topo)).normal.dot(region.slave_normal) <=
+             kOpposingCosine;
+}
+
+ContactSystem::FreshMasters ContactSystem::fresh_masters(const Unit& unit, const FaceGeometry& slave,
+                                                         const AabbTree& tree, const VecX& u) const {
+  const Pair& pair = pairs_[unit.pair];
+  const SearchRegion region = search_region(unit, slave, u);
+  FreshMasters fresh;
+  for (int m : tree.overlapping(region.box.inflated(region.size))) {
+    FaceGeometry mf = face_geometry(pair.master.faces[m], model_.mesh.coords, u);
+    if (!faces_slave(mf, region)) continue;
+    fresh.faces.push_back(m);
+    fresh.geometry.push_back(std::move(mf));
+  }
+  return fresh;
+}
+
+MasterFoot ContactSystem::FreshMasters::find(const Vec3& x) const {
+  std::vector<const FaceGeometry*> c;
+  for (const auto& m : geometry) c.push_back(&m);
+  return find_master(x, c);
+}
+
 void ContactSystem::find_candidates(Unit& unit, const VecX& u,
                                     const std::vector<AabbTree>& trees) const {
   const Pair& pair = pairs_[unit.pair];
-  Box box;
-  Vec3 slave_normal = Vec3::Zero();
-  Real size = 0;
-  if (unit.node >= 0) {
-    box.add(model_.mesh.coords.row(unit.node).transpose() + u.segment<3>(3 * unit.node));
-    for (const auto& [f, local] : pair.node_faces[unit.node])
-      size = std::max(size, face_size(face_geometry(pair.area_faces[f], model_.mesh.coords, u)));
-  } else {
-    const FaceGeometry f = face_geometry(pair.slave.faces[unit.face], model_.mesh.coords, u);
-    box = face_box(f);
-    size = face_size(f);
-    slave_normal = surface_point(f, face_centre(f.topo)).normal;
-  }
+  const SearchRegion region = search_region(unit, slave_geometry(unit, u), u);
   // Master faces within twice the unit's own size: whatever can touch it within the increment
   // (gaps up to 1 % of a body 200 elements across), and no more, however coarse the surfaces
-  // are elsewhere.
+  // are elsewhere. A point that slides farther is caught by missed_contact.
   unit.candidates.clear();
-  for (int m : trees[unit.pair].overlapping(box.inflated(kCandidateMargin * size))) {
-    if (unit.node < 0) {
-      // Surface-to-surface: only master faces facing the slave face.
-      const FaceGeometry mf = face_geometry(pair.master.faces[m], model_.mesh.coords, u);
-      if (surface_point(mf, face_centre(mf.topo)).normal.dot(slave_normal) > kOpposingCosine) continue;
-    }
-    unit.candidates.push_back(m);
-  }
+  for (int m : trees[unit.pair].overlapping(region.box.inflated(kCandidateMargin * region.size)))
+    if (faces_slave(face_geometry(pair.master.faces[m], model_.mesh.coords, u), region))
+      unit.candidates.push_back(m);
 }
 
 void ContactSystem::build_points(Unit& unit, const VecX& u, const OldStates& old) const {
@@ -340,14 +380,7 @@ void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, 
   evaluations_ = 0;
   repair_once_ = false;
   stabilisation_ = 0;  // springs belong to one increment
-  // Broad phase: one tree over each pair's master faces.
-  std::vector<AabbTree> trees;
-  for (const Pair& pair : pairs_) {
-    std::vector<Box> boxes;
-    for (const auto& f : pair.master.faces)
-      boxes.push_back(face_box(face_geometry(f, model_.mesh.coords, u)));
-    trees.emplace_back(boxes);
-  }
+  const std::vector<AabbTree> trees = master_trees(u);
   const std::vector<OldStates> old = committed_states();
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
@@ -585,6 +618,10 @@ constexpr Real kDriftTolerance = 0.1;
 /// round-off, not drift (a tied interface in pure shear has no overclosure to compare with).
 constexpr Real kGapRoundOff = 1e-12;
 
+/// A missed contact is redone at half the increment until the sliding of one increment stays
+/// within the search neighbourhood.
+constexpr Real kMissedRedoFactor = 0.5;
+
 /// How much smaller: the drift grows about with the square of the increment (the frozen normal
 /// is off by the sliding, and so is the gap along it: measured 0.37 -> 0.11 for a halved
 /// increment on the Hertz model), so one redo aims at 80 % of the tolerance.
@@ -594,8 +631,16 @@ Real drift_redo_factor(Real drift) {
 
 }  // namespace
 
-Acceptance ContactSystem::accept(const VecX& u) const {
-  if (criteria() != nonlinear::ContactCriteria::SurfaceToSurface) return {};
+Acceptance ContactSystem::accept(const VecX& u, bool check_drift) const {
+  if (const MissedContact missed = missed_contact(u); missed.depth > 0) {
+    std::ostringstream reason;
+    reason << "contact search missed a penetration of " << missed.depth << " at ("
+           << missed.where.x() << ", " << missed.where.y() << ", " << missed.where.z()
+           << "): the bodies slid farther in the increment than the search looked";
+    return {.accepted = false, .redo_factor = kMissedRedoFactor, .reason = reason.str(),
+            .required = true};
+  }
+  if (!check_drift || criteria() != nonlinear::ContactCriteria::SurfaceToSurface) return {};
   const Real drift = frozen_drift(u);
   if (drift <= kDriftTolerance) return {};
   return {.accepted = false, .redo_factor = drift_redo_factor(drift),
@@ -631,19 +676,20 @@ Real ContactSystem::max_pressure() const {
 
 Real ContactSystem::frozen_drift(const VecX& u) const {
   Real drift = 0, overclosure = 0, coordinates = 0;
+  const std::vector<AabbTree> trees = master_trees(u);
   for (const Unit& unit : units_) {
     if (!pairs_[unit.pair].scheme.linear) continue;
     bool any = false;
     for (const Point& pt : unit.points) any |= pt.trial.active;
     if (!any) continue;
-    const UnitGeometry g = geometry(unit, u);
-    std::vector<const FaceGeometry*> c;
-    for (const auto& m : g.masters) c.push_back(&m);
-    coordinates = std::max(coordinates, g.slave.x.cwiseAbs().maxCoeff());
+    const FaceGeometry slave = slave_geometry(unit, u);
+    // Fresh projections on whatever master faces are under the points now, candidates or not.
+    const FreshMasters masters = fresh_masters(unit, slave, trees[unit.pair], u);
+    coordinates = std::max(coordinates, slave.x.cwiseAbs().maxCoeff());
     for (const Point& pt : unit.points) {
       if (!pt.trial.active) continue;
       overclosure = std::max(overclosure, -pt.trial.gap);
-      const MasterFoot fresh = find_master(g.slave.x.transpose() * pt.frozen.slave_weights, c);
+      const MasterFoot fresh = masters.find(slave.x.transpose() * pt.frozen.slave_weights);
       if (fresh.candidate < 0) continue;  // slid beyond the master surface's edge
       drift = std::max(drift, std::abs(pt.trial.gap - (fresh.foot.gap + gap_offset(pt))));
     }
@@ -652,10 +698,43 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
   return overclosure > 0 ? drift / overclosure : 0;
 }
 
+MissedContact ContactSystem::missed_contact(const VecX& u) const {
+  Real overclosure = 0, coordinates = 0;
+  for (const Unit& unit : units_)
+    for (const Point& pt : unit.points)
+      if (pt.trial.active) overclosure = std::max(overclosure, -pt.trial.gap);
+  const std::vector<AabbTree> trees = master_trees(u);
+  MissedContact worst;
+  for (const Unit& unit : units_) {
+    const FaceGeometry slave = slave_geometry(unit, u);
+    coordinates = std::max(coordinates, slave.x.cwiseAbs().maxCoeff());
+    const FreshMasters fresh = fresh_masters(unit, slave, trees[unit.pair], u);
+    const auto is_candidate = [&unit](int m) {
+      return std::find(unit.candidates.begin(), unit.candidates.end(), m) != unit.candidates.end();
+    };
+    // Only a face the increment did not offer can hold a missed point.
+    if (std::all_of(fresh.faces.begin(), fresh.faces.end(), is_candidate)) continue;
+    const auto check = [&](const Vec3& xs, Real offset) {
+      const MasterFoot foot = fresh.find(xs);
+      if (foot.candidate < 0 || is_candidate(fresh.faces[foot.candidate])) return;
+      const Real depth = -(foot.foot.gap + offset);
+      if (depth > worst.depth) worst = {.depth = depth, .where = xs};
+    };
+    for (const Point& pt : unit.points)
+      if (!pt.trial.active) check(slave.x.transpose() * slave_weights(unit, pt), gap_offset(pt));
+    // A face may have no points at all where its increment offered no master face.
+    if (unit.node < 0)
+      for (Index i = 0; i < slave.x.rows(); ++i) check(slave.x.row(i).transpose(), 0);
+  }
+  const Real tolerance = std::max(kDriftTolerance * overclosure, kGapRoundOff * coordinates);
+  return worst.depth > tolerance ? worst : MissedContact{};
+}
+
 void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {
   std::vector<char> on_slave(model_.n_nodes(), 0), inside(model_.n_nodes(), 0);
   frame.contact_points.clear();
   frame.n_active_contact = 0;
+  const std::vector<AabbTree> trees = master_trees(u);
   for (const Unit& unit : units_) {
     const Pair& pair = pairs_[unit.pair];
     const UnitGeometry g = geometry(unit, u);
@@ -695,12 +774,12 @@ void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {
       inside[unit.node] |= !unit.points.empty() && unit.points.front().pairing.master >= 0;
       continue;
     }
-    std::vector<const FaceGeometry*> c;
-    for (const auto& m : g.masters) c.push_back(&m);
+    // Where the node is now: the increment's candidates may have slid away from it.
+    const FreshMasters masters = fresh_masters(unit, g.slave, trees[unit.pair], u);
     const auto& nodes = pair.slave.faces[unit.face].nodes;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       on_slave[nodes[i]] = 1;
-      if (!inside[nodes[i]]) inside[nodes[i]] = find_master(g.slave.x.row(i).transpose(), c).candidate >= 0;
+      if (!inside[nodes[i]]) inside[nodes[i]] = masters.find(g.slave.x.row(i).transpose()).candidate >= 0;
     }
   }
   std::vector<bool> outside(model_.n_nodes(), false);

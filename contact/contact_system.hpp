@@ -10,8 +10,10 @@
 //                       first 8 evaluations of the increment unless SMALL SLIDING, then frozen),
 //                       the trial state, force and tangent of every point.
 //   add_to(system)      the groups' forces and tangents scattered into the reduced system.
-//   accept(u)           the verdict on a converged increment: redo it smaller when the frozen
-//                       geometry of a linear variant drifted (thesis section 7.1).
+//   accept(u)           the verdict on a converged increment: redo it smaller when a slave
+//                       point penetrates a master face the increment's search did not offer it
+//                       (the bodies slid farther than the search neighbourhood), or when the
+//                       frozen geometry of a linear variant drifted (thesis section 7.1).
 //   commit()            the trial point states become the committed ones (the output reads them).
 //   roll_back()         the trial states are dropped (cutback).
 // The driver also asks which convergence rules, solution controls and line search apply.
@@ -26,6 +28,7 @@
 #include "contact/aabb_tree.hpp"
 #include "contact/contact_surface.hpp"
 #include "contact/coulomb_friction.hpp"
+#include "contact/master_search.hpp"
 #include "contact/point_kernel.hpp"
 #include "model/model.hpp"
 #include "nonlinear/convergence.hpp"
@@ -58,6 +61,14 @@ struct Acceptance {
   bool accepted = true;
   Real redo_factor = 1;
   std::string reason;           ///< why it is redone, with the numbers
+  bool required = false;        ///< wrong as it stands: redone or failed, never kept
+};
+
+/// The deepest penetration of a slave point into a master face outside its increment's search
+/// neighbourhood (depth 0: none).
+struct MissedContact {
+  Real depth = 0;
+  Vec3 where = Vec3::Zero();    ///< the slave point, current configuration
 };
 
 /// What one point reports: its state after an evaluation (trial) or at the last converged
@@ -123,9 +134,10 @@ class ContactSystem {
   int n_sticking() const { return frictional_ ? sums_.sticking : -1; }
   int n_slipping() const { return frictional_ ? sums_.slipping : -1; }
 
-  /// The verdict on an increment converged at `u` (thesis section 7.1: frozen projections
-  /// that no longer lie under their points give wrong gaps).
-  Acceptance accept(const VecX& u) const;
+  /// The verdict on an increment converged at `u`: a missed contact is always redone (its
+  /// answer is wrong); with `check_drift`, so is a drifted frozen geometry (thesis section
+  /// 7.1: frozen projections that no longer lie under their points give wrong gaps).
+  Acceptance accept(const VecX& u, bool check_drift = true) const;
   void commit();
   void roll_back();
 
@@ -165,6 +177,11 @@ class ContactSystem {
   /// active points of the linear variants, relative to their largest overclosure (0 when
   /// nothing is active, or when the difference is round-off of the coordinates).
   Real frozen_drift(const VecX& u) const;
+
+  /// A fresh search at `u` over every master face: the deepest penetration of an inactive point
+  /// into a face that was not among its candidates at begin_increment, beyond a tenth of the
+  /// largest overclosure of the active points (the drift check's tolerance) and round-off.
+  MissedContact missed_contact(const VecX& u) const;
 
  private:
   /// Where a point is paired: fixed at begin_increment, except for the re-pairing of the
@@ -219,6 +236,28 @@ class ContactSystem {
     std::vector<FaceGeometry> masters;  ///< the candidates
   };
   UnitGeometry geometry(const Unit& unit, const VecX& u) const;
+  FaceGeometry slave_geometry(const Unit& unit, const VecX& u) const;
+  /// The broad phase: one tree over each pair's master faces at `u`.
+  std::vector<AabbTree> master_trees(const VecX& u) const;
+  /// Where a unit looks for master faces: its slave face's (node's) box, its size (the largest
+  /// of the node's faces) and the slave face's normal (zero for a node).
+  struct SearchRegion {
+    Box box;
+    Real size = 0;
+    Vec3 slave_normal = Vec3::Zero();
+  };
+  SearchRegion search_region(const Unit& unit, const FaceGeometry& slave, const VecX& u) const;
+  /// Surface-to-surface pairs only see master faces that face the slave face.
+  static bool faces_slave(const FaceGeometry& master, const SearchRegion& region);
+  /// A fresh search around a unit at `u` (not limited to its candidates): the master faces
+  /// near it, to project its points on as they are now.
+  struct FreshMasters {
+    std::vector<int> faces;               ///< master face indices of the pair
+    std::vector<FaceGeometry> geometry;
+    MasterFoot find(const Vec3& x) const;  ///< candidate indexes `faces`
+  };
+  FreshMasters fresh_masters(const Unit& unit, const FaceGeometry& slave, const AabbTree& tree,
+                             const VecX& u) const;
   FaceVec slave_weights(const Unit& unit, const Point& pt) const;
   /// Slave area a point represents in configuration `g` (NTS: the nodal area).
   Real point_area(const Unit& unit, const Point& pt, const UnitGeometry& g, const VecX& u) const;

@@ -377,19 +377,20 @@ class NonlinearStatic {
     return convergence_->check(it, {q_bar, max_abs(a.ev.system.rhs), c_max, contact_count()});
   }
 
-  /// Contact's verdict on an increment converged at `u`: it stands, or is redone smaller
-  /// while the increment limits allow it (beyond the thesis, section 7.1).
+  /// Contact's verdict on an increment converged at `u`: it stands, or is redone smaller. A
+  /// drifted frozen geometry is redone while the increment limits allow it (beyond the thesis,
+  /// section 7.1); a missed contact always (the cutback fails the step at those limits).
   nonlinear::Verdict judged_by_contact(const StepContext& sc, const VecX& u) {
     nonlinear::Verdict converged;
     converged.kind = nonlinear::Verdict::Kind::Converged;
-    if (contact_.empty() || !options_.drift_check) return converged;
-    const contact::Acceptance acceptance = contact_.accept(u);
+    if (contact_.empty()) return converged;
+    const contact::Acceptance acceptance = contact_.accept(u, options_.drift_check);
     const bool redo_allowed =
         !sc.step->procedure.direct &&
         acceptance.redo_factor * increments_->increment() >= increments_->min_increment() &&
         increments_->attempt() <= sc.controls.max_cutbacks;
-    if (acceptance.accepted || !redo_allowed) return converged;
-    ++drift_redos_;
+    if (acceptance.accepted || (!redo_allowed && !acceptance.required)) return converged;
+    if (!acceptance.required) ++drift_redos_;
     return {.kind = nonlinear::Verdict::Kind::Cutback, .cutback_factor = acceptance.redo_factor,
             .reason = acceptance.reason};
   }

@@ -347,3 +347,39 @@ TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
   // The drift grows with the square of the increment: the redo aims at 80 % of the tolerance.
   EXPECT_NEAR(redo.redo_factor, std::sqrt(0.8 * 0.1 / sys.frozen_drift(slid)), 1e-12);
 }
+
+TEST(ContactSystem, AMissedContactIsRedoneWhateverTheScheme) {
+  // A small block pressed on a 6 x 6 block, then slid 0.5 along x within one increment: far
+  // beyond the faces the increment's search offered it (two face sizes, 0.2): the fresh search
+  // sees its points inside the lower block, 1e-3 deep, on faces that were no candidates.
+  for (const char* name : {"nts", "gc7", "lgc7"}) {
+    SCOPED_TRACE(name);
+    fixtures::TwoBlocks t;
+    t.lower = {"C3D8", 6, 1};
+    t.upper = {"C3D8", 2, 1};
+    t.upper_size = 0.2;
+    t.offset_x = -0.25;
+    model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
+    ContactSystem sys(m);
+    VecX u = VecX::Zero(3 * m.n_nodes());
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+    sys.begin_increment(u, {.step = 2}, 1);
+    sys.update(u, 1);
+    ASSERT_GT(sys.n_active(), 0);
+    EXPECT_EQ(sys.missed_contact(u).depth, 0);
+    EXPECT_TRUE(sys.accept(u).accepted);
+    VecX slid = u;
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) slid(3 * n) = 0.5;
+    for (int evaluation = 0; evaluation < 3; ++evaluation) sys.update(slid, 1);  // re-pairing
+    // Every scheme: the nonlinear ones lost their faces, the linear one pushes on faces that
+    // are no longer under its points (exact gaps on the flat extended faces, wrong master nodes).
+    EXPECT_NEAR(sys.missed_contact(slid).depth, 1e-3, 1e-9);
+    const Acceptance redo = sys.accept(slid, /*check_drift=*/false);
+    EXPECT_FALSE(redo.accepted);
+    EXPECT_TRUE(redo.required);
+    EXPECT_EQ(redo.redo_factor, 0.5);
+    EXPECT_NE(redo.reason.find("contact search missed a penetration of 0.001"), std::string::npos);
+  }
+}
