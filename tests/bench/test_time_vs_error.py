@@ -114,7 +114,7 @@ class Checks(unittest.TestCase):
 class PenaltyStudy(unittest.TestCase):
     def test_cases_carry_the_penalty_of_their_setting(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[],
-                    penalties=[1, 1e4], penalty_ratio=4, increments=[])
+                    penalties=[1, 1e4], penalty_ratio=4, increments=[], slides=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([c.setting for c in study], ["K a/E* 1", "K a/E* 10000"])
         e_star, a = time_vs_error.hertz_sphere.E_STAR, time_vs_error.hertz_sphere.TARGET_RADIUS
@@ -130,7 +130,7 @@ class PenaltyStudy(unittest.TestCase):
 class IncrementStudy(unittest.TestCase):
     def setUp(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
-                    increments=[1, 3], increment_ratio=4)
+                    increments=[1, 3], increment_ratio=4, slides=[])
         self.study = time_vs_error.cases(size, seed=1)
 
     def test_each_increment_count_with_and_without_the_drift_check(self):
@@ -152,6 +152,28 @@ class IncrementStudy(unittest.TestCase):
         # the completeness check expects exactly these rows
         expected = time_vs_error.expected_keys(self.study[:2], schemes, "kontakt", ccx=True)
         self.assertEqual(len(expected), 4 + 2 + 2)  # 4 schemes and 2 ccx types, then 2 linear
+
+
+class DriftStudy(unittest.TestCase):
+    def test_each_slide_count_with_and_without_the_drift_check(self):
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
+                    increments=[], slides=[1, 4])
+        study = time_vs_error.cases(size, seed=1)
+        self.assertEqual([(c.problem, c.setting) for c in study],
+                         [("sliding_increments", "1 increments"),
+                          ("sliding_increments", "1 increments, drift check off"),
+                          ("sliding_increments", "4 increments"),
+                          ("sliding_increments", "4 increments, drift check off")])
+        for case, n in zip(study, (1, 1, 4, 4)):
+            step = case.model.later_steps[0][0]
+            self.assertEqual((step[0], step[3]), (1.0 / n, 1.0 / n))  # the slide's increments
+            self.assertEqual(case.model.increment, (1.0, 1.0, 1e-5, 1.0))  # the press: as given
+        self.assertEqual(study[1].kontakt_args, ("--drift-check", "off"))
+        self.assertTrue(study[1].linear_variants_only)
+        self.assertEqual(time_vs_error.STUDIES["sliding_increments"][0](study[3].setting), 4.0)
+
+    def test_smoke_has_no_drift_study(self):
+        self.assertEqual(time_vs_error.SMOKE["slides"], [])
 
 
 if __name__ == "__main__":

@@ -30,6 +30,14 @@ Problems (`setting` is what varies along a problem's axis):
                 linear variants also with the drift check off (kontakt --drift-check off,
                 setting "N increments, drift check off"; ccx and the other schemes are not
                 rerun there). Besides the front plot, hertz_increments_study.png.
+  sliding_increments  the drift study: a cylinder pressed on a block and slid 3.7 contact
+                half-widths across it, frictionless, plane strain, the block's top the slave
+                (tests/contact_models/sliding_cylinder.py, level 1, K b/E* = 10), the slide in N
+                increments for N in --slides (1 2 4 8 16), setting = N, the linear variants
+                also with the drift check off. error_turned = max |p2(x, z) - p1(-x, h - z)| /
+                max p1: the nodal pressure after the slide against the pressure before it,
+                turned half about the y axis (exact for the discrete problem: what is left is
+                the increment path's). Besides the front plot, sliding_increments_study.png.
   hertz_line    plane-strain Hertz line contact (tests/contact_models/hertz.py), setting =
                 element and mesh level; error_p0, error_p0_fit, error_radius (the half-width b)
                 as contact_hertz.py measures them; error = the largest magnitude.
@@ -47,9 +55,10 @@ no less accurate (tests/bench/pareto.py).
 
 --smoke: patch 2 variants, sphere a/h 4, the penalty study at K a/E* 10 and the increment study
 at 1 increment (drift check on and off) on a/h 4, line Hertz level 1 (C3D8), schemes nts gc7 lgc7 and
-ccx's two types; exit code 1 when the CSV lacks a column or a row per (problem, solver, scheme,
-setting), or a kontakt run did not converge with a measured error. Without --smoke only the
-CSV's completeness is checked.
+ccx's two types (no drift study: verification_contact_sliding runs its model in CI); exit code
+1 when the CSV lacks a column or a row per (problem, solver, scheme, setting), or a kontakt run
+did not converge with a measured error. Without --smoke only the CSV's completeness is
+checked (the drift study's linear variants may stop at the increment limit: a finding).
 """
 import argparse
 import csv
@@ -66,32 +75,37 @@ import numpy as np  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "contact_models"))
 sys.path.insert(0, os.path.join(HERE, "..", "verification"))
+sys.path.insert(0, os.path.join(HERE, "..", "peer"))
 import bench_contact  # noqa: E402
 import contact_fields  # noqa: E402
 import contact_hertz  # noqa: E402
 import contact_patch  # noqa: E402
+import frd_file  # noqa: E402
 import hertz  # noqa: E402
 import hertz_sphere  # noqa: E402
 import pareto  # noqa: E402
 import patch  # noqa: E402
+import sliding_cylinder  # noqa: E402
 import solvers  # noqa: E402
 
 COLUMNS = ["problem", "solver", "scheme", "setting", "status", "wall_s", "iterations",
            "increments", "peak_mb", "error", "error_szz", "error_cpress", "error_p0",
-           "error_p0_fit", "error_radius", "message"]
+           "error_p0_fit", "error_radius", "error_turned", "message"]
 KEY = ("problem", "solver", "scheme", "setting")
 # the error components whose largest magnitude is a problem's headline error
 HEADLINE = {"patch": ("error_szz", "error_cpress"),
             "hertz_sphere": ("error_p0", "error_p0_fit", "error_radius"),
             "hertz_penalty": ("error_p0", "error_p0_fit", "error_radius"),
             "hertz_increments": ("error_p0", "error_p0_fit", "error_radius"),
+            "sliding_increments": ("error_turned",),
             "hertz_line": ("error_p0", "error_p0_fit", "error_radius")}
 CCX_SCHEME = {"NODE TO SURFACE": "node-to-surface", "SURFACE TO SURFACE": "surface-to-surface"}
 FULL = dict(patch=6, ratios=[4, 6, 8, 12], line_elements=["C3D8", "C3D20"], line_levels=[1, 2, 3],
             penalties=[1, 10, 100, 1000, 10000], penalty_ratio=6, increments=[1, 2, 3, 6, 12],
-            increment_ratio=6, schemes=list(solvers.SCHEMES))
+            increment_ratio=6, slides=[1, 2, 4, 8, 16], schemes=list(solvers.SCHEMES))
 SMOKE = dict(patch=2, ratios=[4], line_elements=["C3D8"], line_levels=[1], penalties=[10],
-             penalty_ratio=4, increments=[1], increment_ratio=4, schemes=["nts", "gc7", "lgc7"])
+             penalty_ratio=4, increments=[1], increment_ratio=4, slides=[],
+             schemes=["nts", "gc7", "lgc7"])
 DRIFT_OFF = ("--drift-check", "off")
 INCREMENT_STUDY_PENALTY = 10  # K a / E*
 DEFAULT_SEED = 2031  # not one the schemes were tuned on (contact_patch.py's default is 9)
@@ -146,6 +160,11 @@ def sphere_errors(model, run):
             "error_radius": a_fit / a - 1}
 
 
+def turned_error(model, run):
+    frd = frd_file.read(os.path.join(run.result_dir, "sliding.frd"))
+    return {"error_turned": sliding_cylinder.mirror_error(model, frd)}
+
+
 def line_errors(model, level, run):
     e = contact_hertz.relative_errors(contact_hertz.measure(model, level, run.result_dir, "hertz"))
     return {"error_p0": e["peak"], "error_p0_fit": e["p0_fit"], "error_radius": e["b_fit"]}
@@ -173,6 +192,12 @@ def cases(size, seed):
         out.append(Case("hertz_increments", f"{n} increments", model, "sphere", measure))
         out.append(Case("hertz_increments", f"{n} increments, drift check off", model, "sphere",
                         measure, kontakt_args=DRIFT_OFF, linear_variants_only=True))
+    for n in size["slides"]:
+        model = sliding_cylinder.sliding_cylinder(level=1, increments=n)
+        measure = (lambda run, m=model: turned_error(m, run))
+        out.append(Case("sliding_increments", f"{n} increments", model, "sliding", measure))
+        out.append(Case("sliding_increments", f"{n} increments, drift check off", model,
+                        "sliding", measure, kontakt_args=DRIFT_OFF, linear_variants_only=True))
     for element in size["line_elements"]:
         for level in size["line_levels"]:
             model = hertz.hertz(element, level)
@@ -344,11 +369,17 @@ def plot(problem, rows, path):
     plt.close(fig)
 
 
-STUDIES = {  # problem: (x of a row's setting, x label, plot title)
+# problem: (x of a row's setting, x label, plot title, error label). The plots read the CSV
+# (--replot re-plots a finished run), which holds the setting, so x comes from the setting.
+HERTZ_ERROR = "error (p0, fitted p0, radius: largest magnitude)"
+STUDIES = {
     "hertz_penalty": (lambda setting: float(setting.split()[-1]), "penalty K a / E*",
-                      "Hertz sphere: the penalty study"),
+                      "Hertz sphere: the penalty study", HERTZ_ERROR),
     "hertz_increments": (lambda setting: float(setting.split()[0]), "equal increments per step",
-                         "Hertz sphere: the increment study"),
+                         "Hertz sphere: the increment study", HERTZ_ERROR),
+    "sliding_increments": (lambda setting: float(setting.split()[0]), "increments of the slide",
+                           "Sliding cylinder: the drift study",
+                           "error: pressure after the slide against before it, turned"),
 }
 
 
@@ -364,7 +395,7 @@ def plot_study(problem, rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    x_of, x_label, title = STUDIES[problem]
+    x_of, x_label, title, error_label = STUDIES[problem]
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
     for series in sorted({study_series(r) for r in rows}, key=lambda s: (s.startswith("ccx"), s)):
         mine = sorted(((x_of(r["setting"]), r) for r in rows if study_series(r) == series),
@@ -380,7 +411,7 @@ def plot_study(problem, rows, path):
             bottom.plot(*zip(*converged), **style)
     top.set_xscale("log")
     top.set_yscale("log")
-    top.set_ylabel("error (p0, fitted p0, radius: largest magnitude)")
+    top.set_ylabel(error_label)
     bottom.set_ylabel("Newton iterations (converged runs, all attempts)")
     bottom.set_xlabel(x_label)
     top.set_title(title, fontsize=9)
@@ -407,6 +438,8 @@ def main():
     p.add_argument("--increments", nargs="+", type=int,
                    help="increment study: numbers of equal increments (1 2 3 6 12)")
     p.add_argument("--increment-ratio", type=float, help="increment study: the sphere's a/h (6)")
+    p.add_argument("--slides", nargs="+", type=int,
+                   help="drift study: increments of the slide (1 2 4 8 16)")
     p.add_argument("--line-elements", nargs="+", choices=("C3D8", "C3D20"),
                    help="line Hertz: element types (C3D8 C3D20)")
     p.add_argument("--line-levels", nargs="+", type=int, choices=(1, 2, 3),
@@ -418,7 +451,7 @@ def main():
     args = p.parse_args()
     size = dict(SMOKE if args.smoke else FULL)
     for key in ("patch", "ratios", "line_elements", "line_levels", "penalties", "penalty_ratio",
-                "increments", "increment_ratio"):
+                "increments", "increment_ratio", "slides"):
         if getattr(args, key) is not None:
             size[key] = getattr(args, key)
     if args.smoke and "--schemes" not in sys.argv:
