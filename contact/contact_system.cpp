@@ -208,11 +208,12 @@ bool ContactSystem::faces_slave(const FaceGeometry& master, const SearchRegion& 
 }
 
 ContactSystem::FreshMasters ContactSystem::fresh_masters(const Unit& unit, const FaceGeometry& slave,
-                                                         const AabbTree& tree, const VecX& u) const {
+                                                         const AabbTree& tree, const VecX& u,
+                                                         Real reach) const {
   const Pair& pair = pairs_[unit.pair];
   const SearchRegion region = search_region(unit, slave, u);
   FreshMasters fresh;
-  for (int m : tree.overlapping(region.box.inflated(region.size))) {
+  for (int m : tree.overlapping(region.box.inflated(reach * region.size))) {
     FaceGeometry mf = face_geometry(pair.master.faces[m], model_.mesh.coords, u);
     if (!faces_slave(mf, region)) continue;
     fresh.faces.push_back(m);
@@ -618,6 +619,10 @@ constexpr Real kDriftTolerance = 0.1;
 /// round-off, not drift (a tied interface in pure shear has no overclosure to compare with).
 constexpr Real kGapRoundOff = 1e-12;
 
+/// How far (in slave face sizes) the drift check looks for the master face under an active point
+/// that has none near it: a frozen geometry can hold a point in contact far from the master.
+constexpr Real kFarReach = 8;
+
 /// A missed contact is redone at half the increment until the sliding of one increment stays
 /// within the search neighbourhood.
 constexpr Real kMissedRedoFactor = 0.5;
@@ -683,13 +688,20 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
     for (const Point& pt : unit.points) any |= pt.trial.active;
     if (!any) continue;
     const FaceGeometry slave = slave_geometry(unit, u);
-    // Fresh projections on whatever master faces are under the points now, candidates or not.
-    const FreshMasters masters = fresh_masters(unit, slave, trees[unit.pair], u);
+    // Fresh projections on whatever master faces are under the points now, candidates or not;
+    // a point the frozen geometry holds in contact may be far from the master by now.
+    const FreshMasters near = fresh_masters(unit, slave, trees[unit.pair], u);
+    std::optional<FreshMasters> far;
     coordinates = std::max(coordinates, slave.x.cwiseAbs().maxCoeff());
     for (const Point& pt : unit.points) {
       if (!pt.trial.active) continue;
       overclosure = std::max(overclosure, -pt.trial.gap);
-      const MasterFoot fresh = masters.find(slave.x.transpose() * pt.frozen.slave_weights);
+      const Vec3 xs = slave.x.transpose() * pt.frozen.slave_weights;
+      MasterFoot fresh = near.find(xs);
+      if (fresh.candidate < 0) {
+        if (!far) far = fresh_masters(unit, slave, trees[unit.pair], u, kFarReach);
+        fresh = far->find(xs);
+      }
       if (fresh.candidate < 0) continue;  // slid beyond the master surface's edge
       drift = std::max(drift, std::abs(pt.trial.gap - (fresh.foot.gap + gap_offset(pt))));
     }

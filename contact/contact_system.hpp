@@ -250,14 +250,14 @@ class ContactSystem {
   /// Surface-to-surface pairs only see master faces that face the slave face.
   static bool faces_slave(const FaceGeometry& master, const SearchRegion& region);
   /// A fresh search around a unit at `u` (not limited to its candidates): the master faces
-  /// near it, to project its points on as they are now.
+  /// within `reach` of its sizes, to project its points on as they are now.
   struct FreshMasters {
     std::vector<int> faces;               ///< master face indices of the pair
     std::vector<FaceGeometry> geometry;
     MasterFoot find(const Vec3& x) const;  ///< candidate indexes `faces`
   };
   FreshMasters fresh_masters(const Unit& unit, const FaceGeometry& slave, const AabbTree& tree,
-                             const VecX& u) const;
+                             const VecX& u, Real reach = 1) const;
   FaceVec slave_weights(const Unit& unit, const Point& pt) const;
   /// Slave area a point represents in configuration `g` (NTS: the nodal area).
   Real point_area(const Unit& unit, const Point& pt, const UnitGeometry& g, const VecX& u) const;

@@ -383,3 +383,35 @@ TEST(ContactSystem, AMissedContactIsRedoneWhateverTheScheme) {
     EXPECT_NE(redo.reason.find("contact search missed a penetration of 0.001"), std::string::npos);
   }
 }
+
+TEST(ContactSystem, FrozenDriftSeesAPointItsFrozenGeometryHoldsFarFromTheMaster) {
+  // A steep bowl z = 1 - (x - 0.5)^2 under a finely meshed small block. Slid by 0.2 along x and
+  // lifted by 0.03, the points frozen on the left slope still overclose their (tilted, extended)
+  // faces, while the bowl under them is now about 0.04 away: beyond the slave faces' own size,
+  // where the near fresh search looks. The far search finds it: a drift, not "no master".
+  fixtures::TwoBlocks t;
+  t.lower = {"C3D20", 6, 1};
+  t.upper = {"C3D8", 20, 1};
+  t.upper_size = 0.2;
+  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
+      m.mesh.coords(n, 2) -= std::pow(m.mesh.coords(n, 0) - 0.5, 2);
+  ContactSystem sys(m);
+  VecX u = VecX::Zero(3 * m.n_nodes());
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+  sys.begin_increment(u, {.step = 2}, 1);
+  sys.update(u, 1);
+  EXPECT_TRUE(sys.accept(u).accepted);
+  VecX slid = u;
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) {
+      slid(3 * n) = 0.2;
+      slid(3 * n + 2) += 0.03;
+    }
+  sys.update(slid, 1);
+  ASSERT_GT(sys.n_active(), 0);
+  EXPECT_GT(sys.frozen_drift(slid), 1.0);
+  EXPECT_FALSE(sys.accept(slid).accepted);
+}
