@@ -356,7 +356,7 @@ std::optional<JobRecord> JobStore::claim_next() {
                  "(SELECT COUNT(*) FROM jobs AS r WHERE r.sweep_id = j.sweep_id AND "
                  "r.status IN ('running', 'canceling')) < "
                  "(SELECT max_parallel FROM sweeps WHERE sweeps.id = j.sweep_id)) "
-                 "ORDER BY created_ms, sweep_row, id LIMIT 1");
+                 "ORDER BY created_ms, rowid LIMIT 1");  // rowid: the order of insertion
   if (!next.step()) return std::nullopt;
   const std::string id = next.text(0);
   Statement st(writer_, "UPDATE jobs SET attempts = attempts + 1, started_ms = ?, "
