@@ -4,53 +4,23 @@ table expanded to one job per row (the values reach the decks), the 400s and the
 refused row (nothing stored), Idempotency-Key, the max_parallel throttle (never more rows of
 the sweep running at once, other jobs not starved), cancel of a sweep, and kill -9 of the
 daemon with a sweep half done (every row ends succeeded after the restart)."""
-import json
 import os
 import time
 import unittest
 
 import decks
 import kontaktd_harness as harness
-from openapi_check import validate, validate_inline
+from kontaktd_harness import post_sweep, sweep_jobs, wait_sweep
+from openapi_check import validate
 
 KONTAKTD = None
 
 
-def load_template(deck, load):
-    """`deck` with its tip load per node (load / 4) as the placeholder <load>."""
-    text = f"TIP, 3, {load / 4}\n"
-    assert deck.count(text) == 1
-    return deck.replace(text, "TIP, 3, <load>\n")
-
-
-TINY = load_template(decks.tiny(), -10.0)
+TINY = decks.load_template(decks.tiny(), -10.0)
 
 
 def long_rows(increments):
-    return load_template(decks.long_running(increments=increments), -2000.0)
-
-
-def post_sweep(d, body, headers=None):
-    h = {"Content-Type": "application/json"}
-    h.update(headers or {})
-    return d.json("POST", "/v1/sweeps", json.dumps(body).encode(), h)
-
-
-def wait_sweep(d, sweep_id, timeout=120):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        _, _, doc = d.json("GET", f"/v1/sweeps/id/{sweep_id}")
-        if doc["status"] == "finished":
-            return doc
-        time.sleep(0.1)
-    raise TimeoutError(f"sweep {sweep_id} not finished after {timeout} s")
-
-
-def sweep_jobs(d, sweep_id):
-    status, _, doc = d.json("GET", f"/v1/sweeps/id/{sweep_id}/jobs")
-    assert status == 200, doc
-    validate_inline(doc, "/v1/sweeps/id/{id}/jobs", "get", 200)
-    return doc["jobs"]
+    return decks.load_template(decks.long_running(increments=increments), -2000.0)
 
 
 class ExpansionTest(unittest.TestCase):
