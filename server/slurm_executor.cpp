@@ -1,5 +1,6 @@
 #include "server/slurm_executor.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -114,8 +115,9 @@ std::string SlurmExecutor::array_of(const JobLaunch& job) {
     write_file(files.script(), slurm::array_script(sweep.id, row_dirs),
                fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec);
     const CommandResult r = run_command(
-        slurm::sbatch_array_argv(sweep.id, files, tasks, sweep.max_parallel, resources,
-                                 settings_.signal_grace),
+        slurm::sbatch_array_argv(sweep.id, files, tasks,
+                                 std::min(sweep.max_parallel, settings_.max_array_parallel),
+                                 resources, settings_.signal_grace),
         kSbatchTimeout);
     std::optional<std::string> refusal;
     if (!r.ok()) refusal = command_error(r);

@@ -11,10 +11,11 @@
 // again from slurm_job_id (or the --comment).
 //
 // A sweep (POST /v1/sweeps) is one job array: the claim of its first row writes every row's
-// run.sh and submits DATA/sweeps/ID/slurm/run.sh with `--array=0-(N-1)%max_parallel`, whose
-// task i execs row i's run.sh. Each row's slurm_job_id is then its task, "<array>_<i>", which
-// its execution watches and stops like a lone job's id; later rows' claims find their task
-// running or done. An sbatch refusal is kept (slurm/refused) and fails every row with it.
+// run.sh and submits DATA/sweeps/ID/slurm/run.sh with `--array=0-(N-1)%K` (K: the lower of
+// max_parallel and --workers), whose task i execs row i's run.sh. Each row's slurm_job_id is
+// then its task, "<array>_<i>", which its execution watches and stops like a lone job's id;
+// later rows' claims find their task running or done. An sbatch refusal is kept
+// (slurm/refused) and fails every row with it.
 #pragma once
 
 #include <chrono>
@@ -39,6 +40,9 @@ struct SlurmSettings {
   /// How long a job Slurm reports ended may take to show its outcome file (NFS attribute
   /// caches) before Slurm's state is taken for its end.
   std::chrono::milliseconds outcome_wait{5000};
+  /// An array runs at most this many tasks at once (--workers: the jobs the daemon watches),
+  /// whatever the sweep's max_parallel, so no task runs unwatched while its row shows queued.
+  int max_array_parallel = 1000;
 };
 
 class SlurmExecutor final : public Executor {
