@@ -41,7 +41,10 @@ std::optional<std::string> cell_text(const json& v) {
 
 std::optional<HttpResponse> read_rows(const json& j, std::vector<SweepRow>& rows) {
   if (!j.is_array()) return invalid_parameter("rows", "an array of objects (name -> value)");
-  for (std::size_t i = 0; i < j.size() && i <= kMaxSweepRows; ++i) {
+  if (j.size() > kMaxSweepRows)
+    return invalid_parameter("rows", std::to_string(j.size()) + " rows: a sweep has at most " +
+                                         std::to_string(kMaxSweepRows));
+  for (std::size_t i = 0; i < j.size(); ++i) {
     if (!j[i].is_object()) return invalid_parameter("rows", "row " + std::to_string(i) + " is not an object");
     SweepRow row;
     for (const auto& [name, value] : j[i].items()) {
@@ -53,7 +56,6 @@ std::optional<HttpResponse> read_rows(const json& j, std::vector<SweepRow>& rows
     }
     rows.push_back(std::move(row));
   }
-  if (j.size() > kMaxSweepRows) rows.resize(kMaxSweepRows + 1);  // expand_sweep says why
   return std::nullopt;
 }
 

@@ -126,7 +126,7 @@ class ThrottleAndCancelTest(unittest.TestCase):
     def test_max_parallel_is_respected_and_other_jobs_run(self):
         d = harness.Daemon(KONTAKTD, args=["--workers", "3"]).start()
         try:
-            _, _, sweep = post_sweep(d, {"template": long_rows(20),
+            _, _, sweep = post_sweep(d, {"template": long_rows(60),
                                          "rows": [{"load": -100 * (i + 1)} for i in range(5)],
                                          "max_parallel": 2})
             _, _, other = d.submit(decks.long_running(increments=20))
