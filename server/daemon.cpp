@@ -54,7 +54,8 @@ std::unique_ptr<Executor> make_executor(const Settings& settings) {
         .defaults = settings.slurm,
         .worker_exe = fs::read_symlink(kSelf),  // its path on the nodes too
         .signal_grace = std::max(kMinSlurmSignalGrace,
-                                 static_cast<int>(std::ceil(settings.kill_grace)))});
+                                 static_cast<int>(std::ceil(settings.kill_grace))),
+        .max_array_parallel = settings.workers});
   // Every worker thread finds a process waiting, and one more is loading.
   return std::make_unique<LocalExecutor>(kSelf, settings.threads_per_job,
                                          static_cast<std::size_t>(settings.workers) + 1);

@@ -8,12 +8,15 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "server/execution.hpp"
 #include "server/job_resources.hpp"
 #include "server/worker_protocol.hpp"
 
 namespace kontakt::server {
+
+struct SweepLaunch;
 
 /// A job ready to run: its folder (input/ written, work/ empty) and what its run needs.
 struct JobLaunch {
@@ -23,6 +26,20 @@ struct JobLaunch {
   JobResources resources;   ///< the job's own, over the executor's defaults
   /// attach(): events of the run the store has already (a run's events are read from its start).
   std::size_t events_stored = 0;
+  /// The sweep the job is a row of, for an executor that starts a sweep whole (a Slurm job
+  /// array; starts_sweeps_whole()), on the row's first run; none otherwise.
+  std::shared_ptr<const SweepLaunch> sweep{};
+  std::size_t sweep_row = 0;
+};
+
+/// A sweep (POST /v1/sweeps) as an executor that starts it whole sees it.
+struct SweepLaunch {
+  std::string id;
+  std::filesystem::path dir;  ///< DATA/sweeps/ID: what the executor keeps of it
+  int max_parallel = 1;       ///< rows running at once
+  /// Its rows not finished (queued, or claimed meanwhile), by row; JobLaunch::sweep_row is
+  /// each one's index (the array task).
+  std::vector<JobLaunch> rows;
 };
 
 /// The executor refused the job (e.g. sbatch's error); the job fails with this message.
@@ -48,6 +65,12 @@ class Executor {
   virtual bool outlives_daemon() const = 0;
   /// Whether the daemon's --job-time-limit applies (Slurm enforces its own --time).
   virtual bool daemon_enforces_time_limit() const { return true; }
+  /// Whether the first row of a sweep that submit() gets starts every row (a Slurm job
+  /// array); the other rows' submit() then watch what runs already. Otherwise a sweep's rows
+  /// are jobs like any other.
+  virtual bool starts_sweeps_whole() const { return false; }
+  /// A job canceled while queued: stops its run if one was started ahead of its claim.
+  virtual void cancel_unclaimed(const JobLaunch& /*job*/) {}
 };
 
 }  // namespace kontakt::server

@@ -4,11 +4,13 @@ namespace fs = std::filesystem;
 
 namespace kontakt::server {
 
-JobFiles::JobFiles(fs::path data_dir) : jobs_(std::move(data_dir) / "jobs") {
+JobFiles::JobFiles(fs::path data_dir) : jobs_(data_dir / "jobs"), sweeps_(data_dir / "sweeps") {
   fs::create_directories(jobs_);
 }
 
 fs::path JobFiles::job_dir(const std::string& id) const { return jobs_ / id; }
+
+fs::path JobFiles::sweep_dir(const std::string& sweep_id) const { return sweeps_ / sweep_id; }
 
 void JobFiles::remove(const std::string& id) const {
   std::error_code ec;

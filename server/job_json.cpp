@@ -144,4 +144,44 @@ json sweep_row_document(const JobRecord& job, const std::string& key) {
   return row;
 }
 
+json sweep_document(const SweepRecord& sweep, const std::map<std::string, int>& counts,
+                    const std::optional<std::string>& slurm_array_id) {
+  const std::string self = "/v1/sweeps/id/" + sweep.id;
+  json by_status = json::object();
+  int finished = 0, queued = 0;
+  for (JobStatus s : {JobStatus::Queued, JobStatus::Running, JobStatus::Canceling,
+                      JobStatus::Succeeded, JobStatus::Failed, JobStatus::Canceled}) {
+    const auto it = counts.find(status_name(s));
+    const int n = it == counts.end() ? 0 : it->second;
+    by_status[status_name(s)] = n;
+    if (is_terminal(s)) finished += n;
+    if (s == JobStatus::Queued) queued = n;
+  }
+  int jobs = 0;
+  for (const auto& [status, n] : counts) jobs += n;
+  // Jobs deleted one by one leave the sweep: it is over when the rest is.
+  const char* status = finished == jobs ? "finished" : queued == jobs ? "queued" : "running";
+  return {{"id", sweep.id},
+          {"name", sweep.name},
+          {"status", status},
+          {"rows", sweep.n_rows},
+          {"max_parallel", sweep.max_parallel},
+          {"jobs", by_status},
+          {"created", rfc3339(sweep.created_ms)},
+          {"slurm_array_id", or_null(slurm_array_id)},
+          {"links",
+           {{"self", self},
+            {"jobs", self + "/jobs"},
+            {"cancel", self + "/cancel"},
+            {"by_label", "/v1/sweeps/sweep?label=sweep=" + sweep.id}}}};
+}
+
+json sweep_job_document(const JobRecord& job) {
+  json row = summary_document(job);
+  row["row"] = job.sweep_row;
+  row["created"] = rfc3339(job.created_ms);
+  row["finished"] = optional_time(job.finished_ms);
+  return row;
+}
+
 }  // namespace kontakt::server

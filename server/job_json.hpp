@@ -39,4 +39,12 @@ nlohmann::json sweep_list_document(const std::vector<LabelKeyCount>& keys);
 /// times.
 nlohmann::json sweep_row_document(const JobRecord& job, const std::string& key);
 
+/// GET /v1/sweeps/id/{id}: a sweep made by POST /v1/sweeps, its jobs counted by status
+/// (`counts`: status name -> jobs), and its Slurm array's id once submitted.
+nlohmann::json sweep_document(const SweepRecord& sweep, const std::map<std::string, int>& counts,
+                              const std::optional<std::string>& slurm_array_id);
+
+/// One job of GET /v1/sweeps/id/{id}/jobs: its row, the summary, its labels.
+nlohmann::json sweep_job_document(const JobRecord& job);
+
 }  // namespace kontakt::server

@@ -47,6 +47,8 @@ struct JobRecord {
   std::optional<std::string> idempotency_key;
   std::string fingerprint;           ///< sha256 of the submission, to check key reuse
   JobResources resources;            ///< the submission's own, over the executor's defaults
+  std::optional<std::string> sweep_id;  ///< a row of this sweep (POST /v1/sweeps)
+  int sweep_row = 0;                 ///< 0-based row in its sweep (the Slurm array index)
 };
 
 /// What a submission stores; the store fills in status, times and counters.
@@ -59,6 +61,20 @@ struct NewJob {
   std::optional<std::string> idempotency_key;
   std::string fingerprint;
   JobResources resources;
+  std::optional<std::string> sweep_id;  ///< set by insert_sweep
+  int sweep_row = 0;
+};
+
+/// A sweep (POST /v1/sweeps): its rows are jobs (JobRecord::sweep_id), each labelled
+/// sweep=<id> and with its parameter values.
+struct SweepRecord {
+  std::string id;                    ///< 32 hex digits, random
+  std::string name;
+  std::int64_t created_ms = 0;
+  int n_rows = 0;
+  int max_parallel = 0;              ///< rows running at once, at most
+  std::optional<std::string> idempotency_key;
+  std::string fingerprint;
 };
 
 /// One entry of a job's event log; `seq` is the SSE id and the `since` cursor.

@@ -15,7 +15,9 @@ namespace {
 constexpr const char* kJobColumns =
     "id, name, status, reason, message, main_file, scheme, labels, created_ms, updated_ms, "
     "started_ms, finished_ms, attempts, n_steps, planned_time, progress, summary, "
-    "idempotency_key, fingerprint, resources";
+    "idempotency_key, fingerprint, resources, sweep_id, sweep_row";
+constexpr const char* kSweepColumns =
+    "id, name, created_ms, n_rows, max_parallel, idempotency_key, fingerprint";
 
 json progress_to_json(const JobProgress& p) {
   json j{{"step", p.step},           {"increment", p.increment}, {"attempt", p.attempt},
@@ -85,7 +87,23 @@ JobRecord record_from_row(const Statement& st) {
   r.idempotency_key = st.optional_text(17);
   r.fingerprint = st.text(18);
   read_resources(json::parse(st.text(19)), r.resources);  // written by insert_job: valid
+  r.sweep_id = st.optional_text(20);
+  r.sweep_row = static_cast<int>(st.integer(21));
   return r;
+}
+
+std::optional<SweepRecord> select_sweep(SqliteDb& db, const std::string& where,
+                                        const std::string& value) {
+  Statement st(db, std::string("SELECT ") + kSweepColumns + " FROM sweeps WHERE " + where + " = ?");
+  st.bind(1, value);
+  if (!st.step()) return std::nullopt;
+  return SweepRecord{.id = st.text(0),
+                     .name = st.text(1),
+                     .created_ms = st.integer(2),
+                     .n_rows = static_cast<int>(st.integer(3)),
+                     .max_parallel = static_cast<int>(st.integer(4)),
+                     .idempotency_key = st.optional_text(5),
+                     .fingerprint = st.text(6)};
 }
 
 std::optional<JobRecord> select_job(SqliteDb& db, const std::string& where,
@@ -175,6 +193,25 @@ bool JobStore::transition(const std::string& id, JobStatus to, const std::string
   return true;
 }
 
+namespace {
+
+/// Inserts one queued job with its first event (the caller's transaction).
+void insert_job_row(SqliteDb& db, const NewJob& job, std::int64_t now) {
+  Statement st(db,
+               "INSERT INTO jobs (id, name, status, main_file, scheme, labels, created_ms, "
+               "updated_ms, n_steps, planned_time, idempotency_key, fingerprint, resources, "
+               "sweep_id, sweep_row) VALUES (?, ?, 'queued', ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  st.bind(1, job.id).bind(2, job.name).bind(3, job.main_file).bind_optional(4, job.scheme);
+  st.bind(5, json_text(json(job.labels))).bind(6, now).bind(7, now);
+  st.bind(8, static_cast<std::int64_t>(job.n_steps)).bind(9, job.planned_time);
+  st.bind_optional(10, job.idempotency_key).bind(11, job.fingerprint);
+  st.bind(12, json_text(to_json(job.resources))).bind_optional(13, job.sweep_id);
+  st.bind(14, static_cast<std::int64_t>(job.sweep_row)).run();
+  insert_event(db, job.id, "status", json_text(json{{"event", "status"}, {"status", "queued"}}));
+}
+
+}  // namespace
+
 std::pair<InsertResult, JobRecord> JobStore::insert_job(const NewJob& job) {
   std::lock_guard lock(writer_mutex_);
   WriteTransaction tx(writer_);
@@ -185,22 +222,69 @@ std::pair<InsertResult, JobRecord> JobStore::insert_job(const NewJob& job) {
       return {result, *existing};
     }
   }
-  const std::int64_t now = now_ms();
-  Statement st(writer_,
-               "INSERT INTO jobs (id, name, status, main_file, scheme, labels, created_ms, "
-               "updated_ms, n_steps, planned_time, idempotency_key, fingerprint, resources) "
-               "VALUES (?, ?, 'queued', ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  st.bind(1, job.id).bind(2, job.name).bind(3, job.main_file).bind_optional(4, job.scheme);
-  st.bind(5, json_text(json(job.labels))).bind(6, now).bind(7, now);
-  st.bind(8, static_cast<std::int64_t>(job.n_steps)).bind(9, job.planned_time);
-  st.bind_optional(10, job.idempotency_key).bind(11, job.fingerprint);
-  st.bind(12, json_text(to_json(job.resources))).run();
-  insert_event(writer_, job.id, "status",
-               json_text(json{{"event", "status"}, {"status", "queued"}}));
+  insert_job_row(writer_, job, now_ms());
   auto record = select_job(writer_, "id", job.id);
   tx.commit();
   changed();
   return {InsertResult::Created, *record};
+}
+
+std::pair<InsertResult, SweepRecord> JobStore::insert_sweep(const SweepRecord& sweep,
+                                                            std::vector<NewJob> rows) {
+  std::lock_guard lock(writer_mutex_);
+  WriteTransaction tx(writer_);
+  if (sweep.idempotency_key) {
+    if (auto existing = select_sweep(writer_, "idempotency_key", *sweep.idempotency_key)) {
+      const auto result = existing->fingerprint == sweep.fingerprint ? InsertResult::Replayed
+                                                                     : InsertResult::KeyConflict;
+      return {result, *existing};
+    }
+  }
+  const std::int64_t now = now_ms();
+  Statement st(writer_, "INSERT INTO sweeps (id, name, created_ms, n_rows, max_parallel, "
+                        "idempotency_key, fingerprint) VALUES (?, ?, ?, ?, ?, ?, ?)");
+  st.bind(1, sweep.id).bind(2, sweep.name).bind(3, now);
+  st.bind(4, static_cast<std::int64_t>(rows.size()));
+  st.bind(5, static_cast<std::int64_t>(sweep.max_parallel));
+  st.bind_optional(6, sweep.idempotency_key).bind(7, sweep.fingerprint).run();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i].sweep_id = sweep.id;
+    rows[i].sweep_row = static_cast<int>(i);
+    insert_job_row(writer_, rows[i], now);
+  }
+  auto record = select_sweep(writer_, "id", sweep.id);
+  tx.commit();
+  changed();
+  return {InsertResult::Created, *record};
+}
+
+std::optional<SweepRecord> JobStore::find_sweep(const std::string& id) {
+  auto lease = read();
+  return select_sweep(lease.db(), "id", id);
+}
+
+std::optional<SweepRecord> JobStore::find_sweep_by_key(const std::string& idempotency_key) {
+  auto lease = read();
+  return select_sweep(lease.db(), "idempotency_key", idempotency_key);
+}
+
+std::vector<JobRecord> JobStore::sweep_jobs(const std::string& sweep_id) {
+  auto lease = read();
+  Statement st(lease.db(), std::string("SELECT ") + kJobColumns +
+                               " FROM jobs WHERE sweep_id = ? ORDER BY sweep_row");
+  st.bind(1, sweep_id);
+  std::vector<JobRecord> jobs;
+  while (st.step()) jobs.push_back(record_from_row(st));
+  return jobs;
+}
+
+std::map<std::string, int> JobStore::sweep_counts(const std::string& sweep_id) {
+  auto lease = read();
+  Statement st(lease.db(), "SELECT status, COUNT(*) FROM jobs WHERE sweep_id = ? GROUP BY status");
+  st.bind(1, sweep_id);
+  std::map<std::string, int> counts;
+  while (st.step()) counts[st.text(0)] = static_cast<int>(st.integer(1));
+  return counts;
 }
 
 std::optional<JobRecord> JobStore::find_job(const std::string& id) {
@@ -266,8 +350,13 @@ std::optional<int> JobStore::queue_position(const JobRecord& job) {
 std::optional<JobRecord> JobStore::claim_next() {
   std::lock_guard lock(writer_mutex_);
   WriteTransaction tx(writer_);
-  Statement next(writer_, "SELECT id FROM jobs WHERE status = 'queued' "
-                          "ORDER BY created_ms, id LIMIT 1");
+  // A sweep's row waits while max_parallel rows of its sweep run; other jobs go ahead of it.
+  Statement next(writer_,
+                 "SELECT id FROM jobs AS j WHERE status = 'queued' AND (sweep_id IS NULL OR "
+                 "(SELECT COUNT(*) FROM jobs AS r WHERE r.sweep_id = j.sweep_id AND "
+                 "r.status IN ('running', 'canceling')) < "
+                 "(SELECT max_parallel FROM sweeps WHERE sweeps.id = j.sweep_id)) "
+                 "ORDER BY created_ms, rowid LIMIT 1");  // rowid: the order of insertion
   if (!next.step()) return std::nullopt;
   const std::string id = next.text(0);
   Statement st(writer_, "UPDATE jobs SET attempts = attempts + 1, started_ms = ?, "

@@ -63,6 +63,16 @@ class JobStore {
   /// Inserts a queued job. With an idempotency key already used: Replayed (and that job) when
   /// the fingerprint matches, KeyConflict otherwise.
   std::pair<InsertResult, JobRecord> insert_job(const NewJob& job);
+  /// Inserts the sweep and its rows (queued jobs, in this order: row i is rows[i]) in one
+  /// transaction. Idempotency key as for insert_job, on the sweep.
+  std::pair<InsertResult, SweepRecord> insert_sweep(const SweepRecord& sweep,
+                                                    std::vector<NewJob> rows);
+  std::optional<SweepRecord> find_sweep(const std::string& id);
+  std::optional<SweepRecord> find_sweep_by_key(const std::string& idempotency_key);
+  /// The sweep's jobs, by row.
+  std::vector<JobRecord> sweep_jobs(const std::string& sweep_id);
+  /// Its jobs by status name.
+  std::map<std::string, int> sweep_counts(const std::string& sweep_id);
   std::optional<JobRecord> find_job(const std::string& id);
   std::optional<JobRecord> find_by_key(const std::string& idempotency_key);
   JobPage list_jobs(const JobQuery& query);
@@ -70,7 +80,8 @@ class JobStore {
   /// claimed it or it was canceled, however recently the record was read.
   std::optional<int> queue_position(const JobRecord& job);
 
-  /// The oldest queued job, now running (attempts + 1); nullopt when the queue is empty.
+  /// The oldest queued job, now running (attempts + 1); nullopt when the queue is empty. A
+  /// sweep's row is passed over while its sweep has max_parallel rows running or canceling.
   std::optional<JobRecord> claim_next();
   /// queued -> canceled, running -> canceling; other states unchanged. nullopt: no such job.
   std::optional<JobRecord> request_cancel(const std::string& id);

@@ -8,7 +8,7 @@ namespace kontakt::server {
 namespace {
 
 /// Migration i takes the schema from version i to i + 1. Append only; never edit a released one.
-constexpr std::array<const char*, 2> kMigrations{
+constexpr std::array<const char*, 3> kMigrations{
     R"sql(
 CREATE TABLE jobs (
   id              TEXT PRIMARY KEY,
@@ -54,6 +54,21 @@ CREATE TABLE artifacts (
     // The executor resources a submission asked for (job_resources.hpp), a JSON object.
     R"sql(
 ALTER TABLE jobs ADD COLUMN resources TEXT NOT NULL DEFAULT '{}';
+)sql",
+    // Sweeps (POST /v1/sweeps): one record each, its rows are jobs with their row number.
+    R"sql(
+CREATE TABLE sweeps (
+  id              TEXT PRIMARY KEY,
+  name            TEXT NOT NULL,
+  created_ms      INTEGER NOT NULL,
+  n_rows          INTEGER NOT NULL,
+  max_parallel    INTEGER NOT NULL,
+  idempotency_key TEXT UNIQUE,
+  fingerprint     TEXT NOT NULL DEFAULT ''
+);
+ALTER TABLE jobs ADD COLUMN sweep_id TEXT REFERENCES sweeps (id);
+ALTER TABLE jobs ADD COLUMN sweep_row INTEGER NOT NULL DEFAULT 0;
+CREATE INDEX jobs_by_sweep ON jobs (sweep_id, status) WHERE sweep_id IS NOT NULL;
 )sql"};
 
 int current_version(SqliteDb& db) {

@@ -42,6 +42,29 @@ std::optional<ExitStatus> exit_code(const std::string& v) {
   }
 }
 
+/// "12_[3-5,8%2]" -> 12_3 12_4 12_5 12_8; any other id as it is.
+std::vector<std::string> array_ids(const std::string& id) {
+  const std::size_t open = id.find("_["), close = id.rfind(']');
+  if (open == std::string::npos || close == std::string::npos || close < open) return {id};
+  const std::string array = id.substr(0, open);
+  std::string ranges = id.substr(open + 2, close - open - 2);
+  ranges = ranges.substr(0, ranges.find('%'));  // the throttle
+  std::vector<std::string> ids;
+  std::istringstream parts(ranges);
+  for (std::string part; std::getline(parts, part, ',');) {
+    try {
+      const std::size_t dash = part.find('-');
+      const long first = std::stol(part.substr(0, dash));
+      const long last = dash == std::string::npos ? first : std::stol(part.substr(dash + 1));
+      if (first < 0 || last < first || last - first > 100000) return {id};
+      for (long t = first; t <= last; ++t) ids.push_back(array + "_" + std::to_string(t));
+    } catch (const std::exception&) {
+      return {id};
+    }
+  }
+  return ids;
+}
+
 JobState from_words(const std::string& text) {
   JobState s;
   s.state = word_value(text, "JobState");
@@ -63,21 +86,80 @@ std::string batch_script(const std::filesystem::path& exe, const worker::Args& a
          command + " 3>>" + quoted(files.events().string()) + "\n";
 }
 
-std::vector<std::string> sbatch_argv(const std::string& job_id, const RunFiles& files,
-                                     const std::filesystem::path& work_dir,
-                                     const JobResources& r, int grace_seconds) {
+std::string array_script(const std::string& sweep_id,
+                         const std::map<std::size_t, std::filesystem::path>& row_dirs) {
+  std::string script =
+      "#!/bin/sh\n"
+      "# kontaktd sweep " + sweep_id + ": one Slurm job array; task i runs row i's batch script\n"
+      "# (server/slurm_executor.hpp).\n"
+      "case \"$SLURM_ARRAY_TASK_ID\" in\n";
+  for (const auto& [task, dir] : row_dirs)
+    script += "  " + std::to_string(task) + ") dir=" + quoted(dir.string()) + " ;;\n";
+  script += "  *) echo \"kontaktd sweep " + sweep_id +
+            " has no row $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\n"
+            "esac\n"
+            "exec \"$dir/run.sh\" >\"$dir/slurm-${SLURM_ARRAY_JOB_ID}_${SLURM_ARRAY_TASK_ID}.out\" "
+            "2>&1\n";
+  return script;
+}
+
+namespace {
+
+/// sbatch's options for a job or an array, up to the resources and the script.
+std::vector<std::string> sbatch_common(const std::string& name, const std::string& comment,
+                                       const std::filesystem::path& work_dir,
+                                       const std::filesystem::path& output,
+                                       const JobResources& r, int grace_seconds,
+                                       const std::filesystem::path& script) {
   std::vector<std::string> argv{"sbatch", "--parsable",
-                                "--job-name=kontakt-" + job_id.substr(0, 12),
+                                "--job-name=" + name,
                                 "--chdir=" + work_dir.string(),
-                                "--output=" + files.output_pattern().string(),
+                                "--output=" + output.string(),
                                 "--signal=B:TERM@" + std::to_string(grace_seconds),
-                                "--comment=" + job_id, "--no-requeue"};
+                                "--comment=" + comment, "--no-requeue"};
   if (r.partition) argv.push_back("--partition=" + *r.partition);
   argv.push_back("--cpus-per-task=" + std::to_string(r.cpus.value_or(1)));
   if (r.memory) argv.push_back("--mem=" + *r.memory);
   if (r.time) argv.push_back("--time=" + *r.time);
-  argv.push_back(files.script().string());
+  argv.push_back(script.string());
   return argv;
+}
+
+}  // namespace
+
+std::vector<std::string> sbatch_argv(const std::string& job_id, const RunFiles& files,
+                                     const std::filesystem::path& work_dir,
+                                     const JobResources& r, int grace_seconds) {
+  return sbatch_common("kontakt-" + job_id.substr(0, 12), job_id, work_dir,
+                       files.output_pattern(), r, grace_seconds, files.script());
+}
+
+std::string array_spec(const std::vector<std::size_t>& tasks, int max_parallel) {
+  std::string spec;
+  for (std::size_t i = 0; i < tasks.size();) {
+    std::size_t j = i;
+    while (j + 1 < tasks.size() && tasks[j + 1] == tasks[j] + 1) ++j;
+    if (!spec.empty()) spec += ",";
+    spec += std::to_string(tasks[i]);
+    if (j > i) spec += "-" + std::to_string(tasks[j]);
+    i = j + 1;
+  }
+  return spec + "%" + std::to_string(max_parallel);
+}
+
+std::vector<std::string> sbatch_array_argv(const std::string& sweep_id, const RunFiles& files,
+                                           const std::vector<std::size_t>& tasks,
+                                           int max_parallel, const JobResources& r,
+                                           int grace_seconds) {
+  std::vector<std::string> argv =
+      sbatch_common("kontakt-sweep-" + sweep_id.substr(0, 12), sweep_id, files.dir,
+                    files.dir / "slurm-%A_%a.out", r, grace_seconds, files.script());
+  argv.insert(argv.begin() + 2, "--array=" + array_spec(tasks, max_parallel));
+  return argv;
+}
+
+std::string array_task_id(const std::string& array_id, std::size_t task) {
+  return array_id + "_" + std::to_string(task);
 }
 
 std::optional<std::string> parse_sbatch_id(const std::string& out) {
@@ -95,10 +177,11 @@ std::map<std::string, JobState> parse_squeue(const std::string& out) {
     const std::size_t a = line.find('|'), b = line.find('|', a + 1),
                       c = line.find('|', b == std::string::npos ? b : b + 1);
     if (a == std::string::npos || b == std::string::npos || c == std::string::npos) continue;
-    jobs[line.substr(0, a)] = {.state = line.substr(a + 1, b - a - 1),
-                               .reason = line.substr(b + 1, c - b - 1),
-                               .comment = line.substr(c + 1),
-                               .exit = std::nullopt};
+    const JobState state{.state = line.substr(a + 1, b - a - 1),
+                         .reason = line.substr(b + 1, c - b - 1),
+                         .comment = line.substr(c + 1),
+                         .exit = std::nullopt};
+    for (const std::string& id : array_ids(line.substr(0, a))) jobs[id] = state;
   }
   return jobs;
 }
@@ -112,8 +195,15 @@ std::optional<JobState> parse_scontrol_job(const std::string& out) {
 std::optional<JobState> find_in_jobcomp(const std::string& log, const std::string& slurm_id) {
   std::optional<JobState> found;
   std::istringstream lines(log);
-  for (std::string line; std::getline(lines, line);)
-    if (line.rfind("JobId=" + slurm_id + " ", 0) == 0) found = from_words(line);
+  const std::size_t underscore = slurm_id.find('_');
+  for (std::string line; std::getline(lines, line);) {
+    const bool match =
+        underscore == std::string::npos
+            ? line.rfind("JobId=" + slurm_id + " ", 0) == 0
+            : word_value(line, "ArrayJobId") == slurm_id.substr(0, underscore) &&
+                  word_value(line, "ArrayTaskId") == slurm_id.substr(underscore + 1);
+    if (match) found = from_words(line);
+  }
   return found;
 }
 

@@ -42,6 +42,25 @@ std::vector<std::string> sbatch_argv(const std::string& job_id, const RunFiles& 
                                      const std::filesystem::path& work_dir,
                                      const JobResources& resources, int grace_seconds);
 
+/// The batch script of a sweep's job array: task i (SLURM_ARRAY_TASK_ID) execs the batch
+/// script of row i, `row_dirs.at(i)`/run.sh (batch_script), with its output in that folder
+/// as slurm-<array>_<task>.out, where a lone job has its slurm-<id>.out.
+std::string array_script(const std::string& sweep_id,
+                         const std::map<std::size_t, std::filesystem::path>& row_dirs);
+
+/// sbatch's --array value: the tasks as ranges ("0-4,6,8-19") and the throttle ("%3").
+std::string array_spec(const std::vector<std::size_t>& tasks, int max_parallel);
+
+/// sbatch --parsable of a sweep's array (`--array=array_spec(tasks)`, the options of
+/// sbatch_argv with `--comment=<sweep id>`), its own output in `files.dir` (slurm-%A_%a.out).
+std::vector<std::string> sbatch_array_argv(const std::string& sweep_id, const RunFiles& files,
+                                           const std::vector<std::size_t>& tasks,
+                                           int max_parallel, const JobResources& resources,
+                                           int grace_seconds);
+
+/// An array task's id: "<array>_<task>".
+std::string array_task_id(const std::string& array_id, std::size_t task);
+
 /// The job id of `sbatch --parsable` ("123" or "123;cluster"); nullopt when it is not one.
 std::optional<std::string> parse_sbatch_id(const std::string& out);
 
@@ -55,11 +74,13 @@ struct JobState {
 
 /// The squeue format these parsers read: id|state|reason|comment.
 inline constexpr const char* kSqueueFormat = "%i|%T|%r|%k";
-/// `squeue --noheader --format=kSqueueFormat` output, by Slurm job id.
+/// `squeue --noheader --format=kSqueueFormat` output, by Slurm job id; an array's pending
+/// tasks listed as one line ("12_[3-9%2]", without --array) count as each task (12_3 ...).
 std::map<std::string, JobState> parse_squeue(const std::string& out);
 /// `scontrol show job ID` output (JobState=, Reason=, ExitCode=).
 std::optional<JobState> parse_scontrol_job(const std::string& out);
-/// The last record of job `slurm_id` in a jobcomp/filetxt log.
+/// The last record of job `slurm_id` in a jobcomp/filetxt log; an array task's ("12_3") is
+/// the line with ArrayJobId=12 ArrayTaskId=3.
 std::optional<JobState> find_in_jobcomp(const std::string& log, const std::string& slurm_id);
 /// `scontrol show config` output: JobCompLoc when JobCompType is jobcomp/filetxt.
 std::optional<std::string> jobcomp_file(const std::string& config);

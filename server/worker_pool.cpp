@@ -51,6 +51,14 @@ void WorkerPool::cancel_running(const std::string& id) {
     it->second->request(StopCause::Request);
 }
 
+void WorkerPool::cancel_unclaimed(const std::string& id) {
+  try {
+    if (const auto job = store_.find_job(id)) executor_.cancel_unclaimed(launch_of(*job));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kontaktd: job %s: %s\n", id.c_str(), e.what());
+  }
+}
+
 int WorkerPool::n_busy() const {
   std::lock_guard lock(mutex_);
   return static_cast<int>(running_.size());
@@ -120,7 +128,23 @@ JobLaunch WorkerPool::launch_of(const JobRecord& job) const {
                    .out_dir = files_.work_dir(job.id),
                    .job_name = fs::path(job.main_file).stem().string(),
                    .threads = settings_.threads_per_job},
-          .resources = job.resources};
+          .resources = job.resources,
+          .sweep_row = static_cast<std::size_t>(job.sweep_row)};
+}
+
+std::shared_ptr<const SweepLaunch> WorkerPool::sweep_launch_of(const JobRecord& job) {
+  // A retried row runs alone: its array task has ended.
+  if (!job.sweep_id || job.attempts != 1 || !executor_.starts_sweeps_whole()) return nullptr;
+  const auto sweep = store_.find_sweep(*job.sweep_id);
+  if (!sweep) return nullptr;
+  auto launch = std::make_shared<SweepLaunch>();
+  launch->id = sweep->id;
+  launch->dir = files_.sweep_dir(sweep->id);
+  launch->max_parallel = sweep->max_parallel;
+  // Rows canceled or deleted before the array is started are left out of it.
+  for (const JobRecord& row : store_.sweep_jobs(sweep->id))
+    if (!is_terminal(row.status)) launch->rows.push_back(launch_of(row));
+  return launch;
 }
 
 void WorkerPool::run(const JobRecord& job, bool adopted) {
@@ -136,7 +160,9 @@ void WorkerPool::run(const JobRecord& job, bool adopted) {
 
   JobLaunch launch = launch_of(job);
   if (adopted) launch.events_stored = static_cast<std::size_t>(store_.count_run_events(job.id));
-  if (!adopted) {  // a requeued job starts from a clean slate
+  // The first run of a sweep's row: its array task may have run already.
+  if (!adopted) launch.sweep = sweep_launch_of(job);
+  if (!adopted && !launch.sweep) {  // a requeued job starts from a clean slate
     std::error_code ec;
     fs::remove_all(launch.args.out_dir, ec);
     fs::remove_all(files_.results_dir(job.id), ec);

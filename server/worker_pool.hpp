@@ -54,6 +54,7 @@ class WorkerPool final : public handlers::JobControl {
 
   void job_queued() override;
   void cancel_running(const std::string& id) override;
+  void cancel_unclaimed(const std::string& id) override;
   int n_workers() const override { return settings_.workers; }
   int n_busy() const override;
 
@@ -64,6 +65,8 @@ class WorkerPool final : public handlers::JobControl {
   /// Runs the job through the executor (`adopted`: attaches to its run instead).
   void run(const JobRecord& job, bool adopted);
   JobLaunch launch_of(const JobRecord& job) const;
+  /// The sweep of a row on its first run, for an executor that starts sweeps whole.
+  std::shared_ptr<const SweepLaunch> sweep_launch_of(const JobRecord& job);
   /// Records the verdict: finish (publishing the files), requeue or retry.
   void conclude(const JobRecord& job, const JobVerdict& verdict, const JobSummary& summary);
 

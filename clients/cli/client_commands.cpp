@@ -18,6 +18,7 @@
 
 #include "cli/http_client.hpp"
 #include "cli/job_outcome.hpp"
+#include "cli/parameter_table.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -26,7 +27,7 @@ namespace kontakt::cli {
 
 namespace {
 
-constexpr const char* kCommands[] = {"submit", "status", "logs", "wait", "cancel", "fetch", "list"};
+constexpr const char* kCommands[] = {"submit", "sweep", "status", "logs", "wait", "cancel", "fetch", "list"};
 constexpr auto kPollInterval = std::chrono::milliseconds(250);
 
 /// The options every daemon command understands, plus what is left for the command itself.
@@ -142,7 +143,10 @@ json expect_json(const HttpReply& reply) {
   const json body = json::parse(reply.body, nullptr, false);
   if (reply.status == 422 && body.is_object() && body.value("code", "") == "input_error") {
     std::string lines;
-    for (const json& e : body.value("errors", json::array())) lines += e.value("message", "") + "\n";
+    for (const json& e : body.value("errors", json::array())) {
+      if (e.contains("row")) lines += "row " + e["row"].dump() + ": ";  // a sweep's row
+      lines += e.value("message", "") + "\n";
+    }
     if (!lines.empty()) lines.pop_back();
     throw DeckRejected(lines.empty() ? body.value("detail", "") : lines);
   }
@@ -364,6 +368,82 @@ int cmd_list(HttpClient& client, CommonArgs& args) {
   return kSucceeded;
 }
 
+/// Polls the sweep until every job of it has ended; prints one line per job. The exit code:
+/// the highest of its jobs' (`wait`'s codes): 0 only when every job succeeded.
+int wait_for_sweep(HttpClient& client, const std::string& id, std::optional<double> timeout,
+                   bool as_json) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string path = "/v1/sweeps/id/" + percent_encode(id);
+  while (true) {
+    const json sweep = expect_json(client.request("GET", path));
+    if (sweep.value("status", "") == "finished") break;
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (timeout && waited > *timeout) {
+      std::fprintf(stderr, "kontakt: sweep %s still running after %g s\n", id.c_str(), *timeout);
+      return kWaitTimeout;
+    }
+    std::this_thread::sleep_for(kPollInterval);
+  }
+  const json jobs = expect_json(client.request("GET", path + "/jobs"));
+  int code = kSucceeded;
+  for (const json& job : jobs["jobs"]) {
+    const std::string status = job.value("status", "");
+    const std::string reason = job["reason"].is_string() ? job["reason"].get<std::string>() : "";
+    if (as_json) std::printf("%s\n", job.dump().c_str());
+    else
+      std::printf("%4d  %s  %-9s  %s\n", job.value("row", 0), job.value("id", "").c_str(),
+                  status.c_str(), reason.c_str());
+    const int job_code = exit_code_for_job({{"status", status}, {"reason", {{"code", reason}}}});
+    code = std::max(code, job_code);
+  }
+  return code;
+}
+
+int cmd_sweep(HttpClient& client, CommonArgs& args) {
+  const auto name = take_option(args.rest, "--name");
+  const auto scheme = take_option(args.rest, "--scheme");
+  const auto key = take_option(args.rest, "--idempotency-key");
+  const auto max_parallel = take_option(args.rest, "--max-parallel");
+  const auto labels = take_all(args.rest, "--label");
+  const bool wait = take_flag(args.rest, "--wait");
+  const auto timeout = take_timeout(args.rest);
+  for (const auto& a : args.rest)
+    if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+  if (args.rest.size() != 2) throw UsageError("expected TEMPLATE.inp PARAMS.csv");
+  const fs::path table_file = args.rest[1];
+  json body{{"template", read_file(args.rest[0])}};
+  try {
+    body["rows"] = parse_parameter_table(read_file(table_file));
+  } catch (const TableError& e) {
+    throw UsageError(table_file.string() + ": " + e.what());
+  }
+  if (name) body["name"] = *name;
+  if (scheme) body["scheme"] = *scheme;
+  if (max_parallel) {
+    char* end = nullptr;
+    const long n = std::strtol(max_parallel->c_str(), &end, 10);
+    if (*end || n < 1) throw UsageError("--max-parallel takes a positive whole number");
+    body["max_parallel"] = n;
+  }
+  for (const std::string& l : labels) {
+    const std::size_t eq = l.find('=');
+    if (eq == std::string::npos) throw UsageError("--label takes key=value, not " + l);
+    body["labels"][l.substr(0, eq)] = l.substr(eq + 1);
+  }
+  std::map<std::string, std::string> headers;
+  if (key) headers["Idempotency-Key"] = *key;
+  const json sweep =
+      expect_json(client.request("POST", "/v1/sweeps", body.dump(), "application/json", headers));
+  const std::string id = sweep.value("id", "");
+  if (!wait) {
+    if (args.json) std::printf("%s\n", sweep.dump().c_str());
+    else std::printf("%s\n", id.c_str());
+    return kSucceeded;
+  }
+  std::fprintf(stderr, "kontakt: sweep %s: %d jobs\n", id.c_str(), sweep.value("rows", 0));
+  return wait_for_sweep(client, id, timeout, args.json);
+}
+
 }  // namespace
 
 bool is_client_command(const char* name) {
@@ -378,6 +458,10 @@ void print_client_usage(std::FILE* out) {
       "                 --token T | --token-file F or KONTAKT_TOKEN; --json for JSON output):\n"
       "  kontakt submit DECK.inp|DECK.zip [--name N] [--scheme S] [--label k=v]... [--main F]\n"
       "                 [--idempotency-key K] [--wait [--timeout S]]     prints the job id\n"
+      "  kontakt sweep TEMPLATE.inp PARAMS.csv [--max-parallel N] [--name N] [--scheme S]\n"
+      "                 [--label k=v]... [--idempotency-key K] [--wait [--timeout S]]\n"
+      "                 one job per CSV row (header: the template's <name> placeholders);\n"
+      "                 prints the sweep id; --wait: one line per job, the highest exit code\n"
       "  kontakt status ID            one line: status, step, increment, iteration, progress\n"
       "  kontakt wait ID [--timeout S]  until the job ends (a progress line on a TTY)\n"
       "  kontakt logs ID [-f]         the job's events as JSON lines; -f follows them live\n"
@@ -396,6 +480,7 @@ int client_command(int argc, char** argv) {
     CommonArgs args = parse_common(argc, argv);
     HttpClient client(args.server, args.token, std::chrono::seconds(30));
     if (command == "submit") return cmd_submit(client, args);
+    if (command == "sweep") return cmd_sweep(client, args);
     if (command == "status") return cmd_status(client, args);
     if (command == "wait") return cmd_wait(client, args);
     if (command == "cancel") return cmd_cancel(client, args);

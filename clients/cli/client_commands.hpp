@@ -1,5 +1,5 @@
 // The `kontakt` commands that talk to a kontaktd daemon:
-//   submit DECK.inp|DECK.zip, status ID, logs ID [-f], wait ID, cancel ID, fetch ID, list.
+//   submit DECK.inp|DECK.zip, sweep TEMPLATE.inp PARAMS.csv, status ID, logs ID [-f], wait ID, cancel ID, fetch ID, list.
 #pragma once
 
 #include <cstdio>

@@ -20,6 +20,9 @@ class JobControl {
   virtual void job_queued() = 0;
   /// The job is now canceling: raise its cancel flag if it runs here.
   virtual void cancel_running(const std::string& id) = 0;
+  /// The job was canceled while queued: an executor that started it ahead of its claim (a
+  /// sweep's Slurm array task) stops it.
+  virtual void cancel_unclaimed(const std::string& /*id*/) {}
   /// Workers configured / busy, for /healthz and /metrics.
   virtual int n_workers() const = 0;
   virtual int n_busy() const = 0;

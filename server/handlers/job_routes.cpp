@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "server/digest.hpp"
+#include "server/handlers/cancel.hpp"
 #include "server/handlers/job_query.hpp"
 #include "server/handlers/routes.hpp"
 #include "server/handlers/submit_job.hpp"
@@ -71,12 +72,8 @@ HttpResponse get_job(ApiContext& ctx, const std::string& id) {
 
 /// 202 while the solver stops, 200 when the job is (already) finished: idempotent.
 HttpResponse cancel_job(ApiContext& ctx, const std::string& id) {
-  // The flag goes up before the store records `canceling`, so every solver event stored after
-  // that status comes from the one iteration in flight (a no-op for jobs not running).
-  ctx.control.cancel_running(id);
-  const auto job = ctx.store.request_cancel(id);
+  const auto job = cancel_one(ctx, id);
   if (!job) return job_not_found(id);
-  if (job->status == JobStatus::Canceling) ctx.control.cancel_running(id);
   return json_response(is_terminal(job->status) ? 200 : 202, document_of(ctx, *job));
 }
 

@@ -12,7 +12,8 @@ void add_job_routes(Router& router, ApiContext& ctx);
 void add_event_routes(Router& router, ApiContext& ctx);
 /// GET /v1/jobs/{id}/results, /results/{name}, /summary.
 void add_result_routes(Router& router, ApiContext& ctx);
-/// GET /v1/sweeps (label keys in use), /v1/sweeps/{key} (one summary row per job).
+/// GET /v1/sweeps (label keys in use), /v1/sweeps/{key} (one summary row per job);
+/// POST /v1/sweeps, GET /v1/sweeps/id/{id}, /v1/sweeps/id/{id}/jobs, POST .../cancel.
 void add_sweep_routes(Router& router, ApiContext& ctx);
 /// GET /healthz, /metrics, /v1/queue, /v1/openapi.json, and the dashboard: / (job list),
 /// /jobs/{id} (job page), /sweeps (sweep page), /assets/{name}.

@@ -55,26 +55,6 @@ HttpResponse created(ApiContext& ctx, const JobRecord& job, bool replayed) {
   return r;
 }
 
-HttpResponse key_reused() {
-  return problem(422, "idempotency_key_reused",
-                 "this Idempotency-Key was used for a different submission");
-}
-
-/// Checks the deck in place in the job's input folder (in a worker process); a 422 when the
-/// reader refuses it or the check itself fails.
-std::optional<HttpResponse> check_stored_deck(ApiContext& ctx, NewJob& job) {
-  const fs::path input_dir = ctx.files.input_dir(job.id);
-  if (const auto escape = find_escaping_include(input_dir, job.main_file))
-    return deck_rejected(*escape, input_dir);
-  const DeckCheckResult result = ctx.check_deck(input_dir / job.main_file, job.scheme);
-  if (result.failure)
-    return problem(422, "deck_check_failed", "the deck could not be checked: " + *result.failure);
-  if (result.check.error) return deck_rejected(*result.check.error, input_dir);
-  job.n_steps = result.check.n_steps;
-  job.planned_time = result.check.total_time;
-  return std::nullopt;
-}
-
 /// Writes the submitted deck into the job's folder; a 400 for a bad upload.
 std::optional<HttpResponse> store_upload(ApiContext& ctx, const Submission& s, NewJob& job) {
   const fs::path input_dir = ctx.files.input_dir(job.id);
@@ -85,14 +65,6 @@ std::optional<HttpResponse> store_upload(ApiContext& ctx, const Submission& s, N
   } catch (const UploadError& e) {
     return problem(400, "invalid_upload", e.field() + ": " + e.what(), {{"field", e.field()}});
   }
-  return std::nullopt;
-}
-
-/// The Idempotency-Key header: nullopt when absent; a 400 when malformed.
-std::optional<HttpResponse> read_key(const HttpRequest& request, std::optional<std::string>& key) {
-  key = request.header("idempotency-key");
-  if (key && (key->empty() || key->size() > kMaxIdempotencyKey || has_control_chars(*key)))
-    return invalid_parameter("Idempotency-Key", "1 to 255 printable characters");
   return std::nullopt;
 }
 
@@ -158,6 +130,31 @@ std::optional<HttpResponse> read_resubmission(const HttpRequest& request, NewJob
 }
 
 }  // namespace
+
+HttpResponse key_reused() {
+  return problem(422, "idempotency_key_reused",
+                 "this Idempotency-Key was used for a different submission");
+}
+
+std::optional<HttpResponse> check_stored_deck(ApiContext& ctx, NewJob& job) {
+  const fs::path input_dir = ctx.files.input_dir(job.id);
+  if (const auto escape = find_escaping_include(input_dir, job.main_file))
+    return deck_rejected(*escape, input_dir);
+  const DeckCheckResult result = ctx.check_deck(input_dir / job.main_file, job.scheme);
+  if (result.failure)
+    return problem(422, "deck_check_failed", "the deck could not be checked: " + *result.failure);
+  if (result.check.error) return deck_rejected(*result.check.error, input_dir);
+  job.n_steps = result.check.n_steps;
+  job.planned_time = result.check.total_time;
+  return std::nullopt;
+}
+
+std::optional<HttpResponse> read_key(const HttpRequest& request, std::optional<std::string>& key) {
+  key = request.header("idempotency-key");
+  if (key && (key->empty() || key->size() > kMaxIdempotencyKey || has_control_chars(*key)))
+    return invalid_parameter("Idempotency-Key", "1 to 255 printable characters");
+  return std::nullopt;
+}
 
 HttpResponse submit_job(ApiContext& ctx, const HttpRequest& request) {
   Submission s;

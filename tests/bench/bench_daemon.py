@@ -20,6 +20,11 @@ With --executor slurm, a second daemon of this build runs its jobs through a pri
 started here (tests/slurm/slurm_cluster.py: munged, slurmctld, slurmd on this host, needs root)
 and is measured in parts 1 and 2 side by side with the local executor, in the same run.
 
+--sweep measures only sweeps (POST /v1/sweeps): throughput in jobs/s, from the POST to the
+last job's end, of sweeps of tiny decks (--sweep-rows, default 20 and 100 rows) through the
+local executor and, with --executor slurm, through a Slurm job array, against the same number
+of separately submitted Slurm jobs, side by side in one run.
+
 Goals (issues 5 and 10): overhead under 50 ms per job, p99 status latency under 10 ms, cancel
 within the kill grace (default 2 s) however long the factorisation.
 """
@@ -142,6 +147,34 @@ def throughput(d, deck, n_jobs):
     return len(ids), submitted, time.perf_counter() - t0
 
 
+def sweep_throughput(d, n_rows, max_parallel):
+    """(seconds from the POST to the sweep's end, jobs/s) of a sweep of tiny decks."""
+    template = decks.load_template(decks.tiny(), -10.0)
+    t0 = time.perf_counter()
+    status, _, sweep = harness.post_sweep(d, {"template": template, "max_parallel": max_parallel,
+                                              "rows": [{"load": -(i + 1)} for i in range(n_rows)]})
+    assert status == 201, sweep
+    done = harness.wait_sweep(d, sweep["id"], timeout=1800)
+    seconds = time.perf_counter() - t0
+    assert done["jobs"]["succeeded"] == n_rows, done
+    return seconds, n_rows / seconds
+
+
+def sweep_comparison(d, slurm_d, sizes, slurm_workers):
+    """Part 5: sweeps through the local executor, a Slurm array, and separate Slurm jobs."""
+    print("5. sweeps of tiny decks, from the POST to the last job's end:")
+    for n in sizes:
+        seconds, rate = sweep_throughput(d, n, n)
+        print(f"   {n:4d} rows, local executor (2 workers):            {seconds:7.2f} s = {rate:5.1f} jobs/s")
+        if slurm_d:
+            seconds, rate = sweep_throughput(slurm_d, n, slurm_workers)
+            print(f"   {n:4d} rows, one Slurm array (%{slurm_workers}, 2 CPUs):        "
+                  f"{seconds:7.2f} s = {rate:5.1f} jobs/s")
+            count, _, seconds = throughput(slurm_d, decks.tiny(), n)
+            print(f"   {count:4d} Slurm jobs submitted one by one ({slurm_workers} in Slurm): "
+                  f"{seconds:7.2f} s = {count / seconds:5.1f} jobs/s")
+
+
 def wrk_latency(wrk, url, seconds, connections):
     out = subprocess.run([wrk, "-t2", f"-c{connections}", f"-d{seconds}s", "--latency", url],
                          capture_output=True, text=True, timeout=seconds + 30, check=True).stdout
@@ -170,6 +203,10 @@ def main():
                         "(parts 1 and 2), side by side with the local executor")
     p.add_argument("--slurm-workers", type=int, default=4,
                    help="--workers of the slurm daemon: jobs in Slurm at once (default 4)")
+    p.add_argument("--sweep", action="store_true",
+                   help="only part 5: sweep throughput (local; with --executor slurm a Slurm "
+                        "array and separate Slurm jobs too)")
+    p.add_argument("--sweep-rows", default="20,100", help="sizes of the sweeps of --sweep")
     args = p.parse_args()
     if args.smoke:
         args.jobs, args.runs, args.wrk_seconds, args.cancel_dofs = 20, 5, 2, 30000
@@ -189,6 +226,10 @@ def main():
             slurm_d = harness.Daemon(args.kontaktd, env={"SLURM_CONF": cluster.conf},
                                      args=["--executor", "slurm", "--workers",
                                            str(args.slurm_workers)]).start()
+        if args.sweep:
+            sweep_comparison(d, slurm_d, [int(n) for n in args.sweep_rows.split(",")],
+                             args.slurm_workers)
+            return 0
         cli = cli_latency(args.kontakt, deck_path, work, args.runs)
         print(f"1. tiny deck, median of {args.runs}: kontakt solve {1e3 * statistics.median(cli):.1f} ms "
               f"(process wall time)")

@@ -41,3 +41,11 @@ def tiny() -> str:
 def long_running(increments: int = 400, nx: int = 20) -> str:
     """An NLGEOM beam with many fixed increments: runs for seconds, one iteration at a time."""
     return beam(nx, nlgeom=True, increments=increments, load=-2000.0)
+
+
+def load_template(deck: str, load: float) -> str:
+    """`deck` (a beam above) with its tip load per node (load / 4) as the sweep placeholder
+    <load>."""
+    text = f"TIP, 3, {load / 4}\n"
+    assert deck.count(text) == 1
+    return deck.replace(text, "TIP, 3, <load>\n")

@@ -144,6 +144,33 @@ class Daemon:
         return events
 
 
+def post_sweep(d, body, headers=None):
+    """POST /v1/sweeps with `body` as JSON."""
+    h = {"Content-Type": "application/json"}
+    h.update(headers or {})
+    return d.json("POST", "/v1/sweeps", json.dumps(body).encode(), h)
+
+
+def wait_sweep(d, sweep_id, timeout=120):
+    """The sweep's document once every job of it has finished."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        _, _, doc = d.json("GET", f"/v1/sweeps/id/{sweep_id}")
+        if doc["status"] == "finished":
+            return doc
+        time.sleep(0.1)
+    raise TimeoutError(f"sweep {sweep_id} not finished after {timeout} s")
+
+
+def sweep_jobs(d, sweep_id):
+    """GET /v1/sweeps/id/{id}/jobs, checked against the API description: the rows' jobs."""
+    from openapi_check import validate
+    status, _, doc = d.json("GET", f"/v1/sweeps/id/{sweep_id}/jobs")
+    assert status == 200, doc
+    validate(doc, "SweepJobs")
+    return doc["jobs"]
+
+
 def children(pid):
     """Processes whose parent is `pid`: a daemon's worker processes, waiting or working."""
     out = []

@@ -191,6 +191,63 @@ class ClientTest(unittest.TestCase):
         self.assertEqual(self.cli("wait", slow.id, "--timeout", "0.3").returncode, 7)
         self.assertEqual(self.cli("cancel", slow.id).returncode, 0)
 
+    # -- sweeps ----------------------------------------------------------------------------
+    def test_submit_sweep_wait_and_cancel(self):
+        template = decks.load_template(decks.tiny(), -10.0)
+        sweep = self.client.submit_sweep(template, [{"load": -1}, {"load": "-3"}], name="py",
+                                         max_parallel=1, labels={"via": "python"})
+        self.assertEqual((sweep.doc["rows"], sweep.doc["max_parallel"]), (2, 1))
+        rows = sweep.wait(timeout=60)
+        self.assertEqual([r["status"] for r in rows], ["succeeded"] * 2)
+        self.assertEqual([r["labels"]["load"] for r in rows], ["-1", "-3"])
+        self.assertAlmostEqual(rows[1]["max_displacement"] / rows[0]["max_displacement"], 3.0)
+        self.assertEqual(sweep.job(1).status, "succeeded")
+        with self.assertRaises(ApiError) as bad:
+            self.client.submit_sweep(template, [{"lod": 1}])
+        self.assertEqual((bad.exception.status, bad.exception.problem["field"]), (400, "rows"))
+        with self.assertRaises(ApiError) as refused:
+            self.client.submit_sweep(template, [{"load": 1}, {"load": "x"}])
+        self.assertEqual((refused.exception.status, refused.exception.problem["row"]), (422, 1))
+        long_sweep = self.client.submit_sweep(None, [decks.long_running()] * 3, max_parallel=1)
+        long_sweep.cancel()
+        self.assertEqual([r["status"] for r in long_sweep.wait(timeout=60)], ["canceled"] * 3)
+
+    def test_cli_sweep_from_a_csv(self):
+        template = os.path.join(self.tmp, "param.inp")
+        with open(template, "w") as f:
+            f.write(decks.load_template(decks.tiny(), -10.0))
+        table = os.path.join(self.tmp, "params.csv")
+        with open(table, "w") as f:
+            f.write("load\n-1\n-2\n\n-4\n")
+        r = self.cli("sweep", template, table, "--max-parallel", "2", "--name", "cli-sweep",
+                     "--wait", "--timeout", "60")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = r.stdout.splitlines()
+        self.assertEqual(len(lines), 3, r.stdout)
+        self.assertTrue(all("succeeded" in line for line in lines), r.stdout)
+        sweep_id = r.stderr.split("sweep ")[1].split(":")[0]
+        doc = self.client.sweep(sweep_id).doc
+        self.assertEqual((doc["name"], doc["max_parallel"], doc["jobs"]["succeeded"]),
+                         ("cli-sweep", 2, 3))
+        # The table's and the daemon's errors, with their exit codes.
+        with open(table, "w") as f:
+            f.write("load\n-1\n-2,3\n")
+        r = self.cli("sweep", template, table)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("params.csv: line 3: 2 fields, the header has 1", r.stderr)
+        with open(table, "w") as f:
+            f.write("load,mu\n-1,0.2\n")
+        r = self.cli("sweep", template, table)
+        self.assertEqual(r.returncode, 6)
+        self.assertIn("column 'mu' is used by no <mu> placeholder", r.stderr)
+        with open(table, "w") as f:
+            f.write("load\n-1\nabc\n")
+        r = self.cli("sweep", template, table)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("row 1: ", r.stderr)
+        self.assertEqual(self.cli("sweep", template, table, "--max-parallel", "0").returncode, 1)
+        self.assertEqual(self.cli("sweep", template).returncode, 1)
+
     # -- design loop -----------------------------------------------------------------------
     def test_design_loop_example_writes_the_csv(self):
         out = os.path.join(self.tmp, "sweep.csv")

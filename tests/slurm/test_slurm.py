@@ -2,9 +2,10 @@
 """kontaktd --executor slurm against a real Slurm started here (slurm_cluster.py: munged,
 slurmctld, slurmd on this host, torn down at the end, also on failure): submit with progress
 over SSE and the HDF5 results, a deck that fails in its run, sbatch refusals, a Slurm job killed
-outside kontaktd, cancel of a running job and of one pending in Slurm, and kill -9 and SIGTERM
+outside kontaktd, cancel of a running job and of one pending in Slurm, kill -9 and SIGTERM
 of the daemon with jobs in Slurm (adopted again by the next daemon, nothing lost, no event
-twice)."""
+twice), and sweeps as one job array: 20 rows with the throttle seen in squeue, cancel with
+tasks pending and running, kill -9 of the daemon mid-sweep, an sbatch refusal."""
 import json
 import os
 import shutil
@@ -19,6 +20,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(HERE), "server"))
 
 import decks  # noqa: E402
 import kontaktd_harness as harness  # noqa: E402
+from kontaktd_harness import post_sweep, sweep_jobs, wait_sweep  # noqa: E402
 from openapi_check import validate  # noqa: E402
 from slurm_cluster import LocalSlurm  # noqa: E402
 
@@ -219,7 +221,136 @@ class SlurmExecutorTest(unittest.TestCase):
             self.assertEqual(d.wait(job["id"], timeout=30)["status"], "canceled")
 
 
+def array_tasks(array_id, state):
+    """The array's tasks in `state` now, one line each (squeue --array)."""
+    out = subprocess.run(["squeue", "-h", "--array", "--states=" + state, "-j", array_id,
+                          "-o", "%i"], env=SLURM.env, capture_output=True, text=True)
+    return out.stdout.split()
+
+
+def array_id_of(d, sweep_id, timeout=30):
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        _, _, doc = d.json("GET", f"/v1/sweeps/id/{sweep_id}")
+        if doc["slurm_array_id"]:
+            return doc["slurm_array_id"]
+        time.sleep(0.05)
+    raise TimeoutError("the sweep's array was not submitted")
+
+
+class SweepArrayTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.d = slurm_daemon().start()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.d.stop()
+
+    def test_a_20_row_sweep_is_one_throttled_array(self):
+        d = self.d
+        loads = [-(i + 1.0) for i in range(20)]
+        status, _, sweep = post_sweep(d, {"template": decks.load_template(decks.tiny(), -10.0),
+                                          "rows": [{"load": v} for v in loads],
+                                          "max_parallel": 2, "name": "array"})
+        self.assertEqual(status, 201, sweep)
+        array = array_id_of(d, sweep["id"])
+        most_running = 0
+        deadline = time.monotonic() + 80
+        while True:
+            most_running = max(most_running, len(array_tasks(array, "RUNNING")))
+            _, _, doc = d.json("GET", f"/v1/sweeps/id/{sweep['id']}")
+            if doc["status"] == "finished":
+                break
+            self.assertLess(time.monotonic(), deadline, doc)
+            time.sleep(0.05)
+        validate(doc, "SweepRecord")
+        self.assertEqual(doc["jobs"]["succeeded"], 20, doc)
+        self.assertLessEqual(most_running, 2, "--array=...%2: at most 2 tasks at once")
+        self.assertGreaterEqual(most_running, 1)
+        jobs = sweep_jobs(d, sweep["id"])
+        u0 = jobs[0]["max_displacement"]
+        for i, job in enumerate(jobs):
+            # One array: each row ran as its task, with its own load (linear: u follows it).
+            self.assertEqual(slurm_id(d, job["id"]), f"{array}_{i}")
+            self.assertAlmostEqual(job["max_displacement"] / u0, loads[i] / loads[0], places=6)
+            _, _, results = d.json("GET", f"/v1/jobs/{job['id']}/results")
+            self.assertIn(f"row-{i}.hdf", [a["name"] for a in results["artifacts"]])
+        self.assertEqual(os.listdir(os.path.join(d.data_dir, "sweeps")).count(sweep["id"]), 1)
+
+    def test_cancel_of_a_sweep_with_tasks_running_and_pending(self):
+        d = self.d
+        _, _, sweep = post_sweep(d, {
+            "template": decks.load_template(decks.long_running(increments=5000), -2000.0),
+            "rows": [{"load": -10.0 * (i + 1)} for i in range(4)], "max_parallel": 2})
+        array = array_id_of(d, sweep["id"])
+        jobs = sweep_jobs(d, sweep["id"])
+        for job in jobs[:2]:
+            wait_iterating(d, job["id"])
+        self.assertEqual([j["status"] for j in sweep_jobs(d, sweep["id"])][2:], ["queued"] * 2)
+        self.assertEqual(sorted(array_tasks(array, "PENDING")), [f"{array}_2", f"{array}_3"])
+        status, _, doc = d.json("POST", f"/v1/sweeps/id/{sweep['id']}/cancel")
+        self.assertEqual(status, 202, doc)
+        done = wait_sweep(d, sweep["id"], timeout=60)
+        self.assertEqual(done["jobs"]["canceled"], 4, done)
+        for i, job in enumerate(jobs):
+            folder = os.path.join(d.data_dir, "jobs", job["id"], "slurm")
+            if i < 2:  # stopped at an iteration: its outcome says canceled
+                with open(os.path.join(folder, "outcome.json")) as f:
+                    self.assertEqual(json.load(f)["exit_code"], 5)
+            else:  # pending: scancelled (Slurm drops a pending task), never ran
+                self.assertNotIn(f"{array}_{i}", array_tasks(array, "PENDING"))
+                self.assertFalse(os.path.exists(os.path.join(folder, "events.ndjson")))
+        deadline = time.monotonic() + 20
+        while array_tasks(array, "PENDING,RUNNING,COMPLETING"):
+            self.assertLess(time.monotonic(), deadline)
+            time.sleep(0.2)
+
+    def test_an_sbatch_refusal_fails_every_row(self):
+        d = self.d
+        _, _, sweep = post_sweep(d, {"decks": [decks.tiny()] * 3,
+                                     "resources": {"partition": "nosuchpartition"}})
+        done = wait_sweep(d, sweep["id"], timeout=30)
+        self.assertEqual(done["jobs"]["failed"], 3, done)
+        self.assertIsNone(done["slurm_array_id"])
+        for job in sweep_jobs(d, sweep["id"]):
+            _, _, full = d.json("GET", f"/v1/jobs/{job['id']}")
+            self.assertEqual(full["reason"]["code"], "executor_refused")
+            self.assertIn("invalid partition", full["reason"]["message"])
+
+
 class RestartTest(unittest.TestCase):
+    def test_kill9_during_a_sweep_then_restart_adopts_its_tasks(self):
+        data = tempfile.mkdtemp(prefix="kontaktd-slurm-sweep-")
+        d = slurm_daemon(data_dir=data).start()
+        try:
+            _, _, sweep = post_sweep(d, {
+                "template": decks.load_template(decks.long_running(increments=150, nx=4), -2000.0),
+                "rows": [{"load": -100.0 * (i + 1)} for i in range(6)], "max_parallel": 2})
+            array = array_id_of(d, sweep["id"])
+            jobs = sweep_jobs(d, sweep["id"])
+            wait_iterating(d, jobs[0]["id"])
+            d.kill9()
+            # Slurm goes on without the daemon: tasks end and others start.
+            deadline = time.monotonic() + 40
+            while not os.path.exists(os.path.join(data, "jobs", jobs[2]["id"], "slurm",
+                                                  "events.ndjson")):
+                self.assertLess(time.monotonic(), deadline)
+                time.sleep(0.2)
+            d.start()
+            done = wait_sweep(d, sweep["id"], timeout=90)
+            self.assertEqual(done["jobs"]["succeeded"], 6, done)
+            self.assertEqual(done["slurm_array_id"], array)
+            for i, job in enumerate(sweep_jobs(d, sweep["id"])):
+                self.assertEqual(slurm_id(d, job["id"]), f"{array}_{i}")
+                _, _, full = d.json("GET", f"/v1/jobs/{job['id']}")
+                self.assertEqual(full["attempts"], 1)  # adopted or found done, not run again
+                assert_no_event_twice(self, d, job["id"])
+        finally:
+            d.stop()
+            shutil.rmtree(data, ignore_errors=True)
+
+
     def test_kill9_with_jobs_in_slurm_then_restart(self):
         data = tempfile.mkdtemp(prefix="kontaktd-slurm-restart-")
         d = slurm_daemon(data_dir=data).start()

@@ -109,6 +109,29 @@ class Client:
     def job(self, job_id):
         return Job(self, self.request("GET", f"/v1/jobs/{job_id}")[2])
 
+    def submit_sweep(self, template, rows, name=None, scheme=None, labels=None, resources=None,
+                     max_parallel=None, idempotency_key=None):
+        """Submits a parametric sweep: `template` is a deck (text) with <name> placeholders,
+        `rows` a list of dicts (name -> value, str or number), one job each; or `template=None`
+        and `rows` a list of complete decks. At most `max_parallel` rows run at once (on Slurm:
+        one job array, --array=...%max_parallel). Returns a Sweep.
+
+        A bad table raises ApiError 400 naming the field (`.problem["row"]` for a row); a row
+        whose deck the reader refuses, ApiError 422 with `.problem["row"]` and `.errors`."""
+        body = {"decks": list(rows)} if template is None else {"template": template,
+                                                                "rows": list(rows)}
+        for key, value in (("name", name), ("scheme", scheme), ("labels", labels),
+                           ("resources", resources), ("max_parallel", max_parallel)):
+            if value is not None:
+                body[key] = value
+        headers = {"Content-Type": "application/json",
+                   "Idempotency-Key": idempotency_key or str(uuid.uuid4())}
+        _, _, doc = self.request("POST", "/v1/sweeps", json.dumps(body).encode(), headers)
+        return Sweep(self, doc)
+
+    def sweep(self, sweep_id):
+        return Sweep(self, self.request("GET", f"/v1/sweeps/id/{sweep_id}")[2])
+
     def list_jobs(self, status=None, labels=None, page_size=50):
         """Yields every matching job document, newest first, following next_page_token."""
         token = None
@@ -124,6 +147,45 @@ class Client:
             token = page["next_page_token"]
             if not token:
                 return
+
+
+class Sweep:
+    """One sweep made by submit_sweep; `doc` is its latest document (status, job counts by
+    status, rows, max_parallel, slurm_array_id)."""
+
+    def __init__(self, client, doc):
+        self.client, self.doc = client, doc
+        self.id = doc["id"]
+
+    @property
+    def status(self):
+        return self.doc["status"]
+
+    def refresh(self):
+        self.doc = self.client.request("GET", f"/v1/sweeps/id/{self.id}")[2]
+        return self.doc
+
+    def jobs(self):
+        """One summary per row, in row order: row, id, status, labels (the row's parameter
+        values), max_displacement, max_mises, ..."""
+        return self.client.request("GET", f"/v1/sweeps/id/{self.id}/jobs")[2]["jobs"]
+
+    def job(self, row):
+        return self.client.job(self.jobs()[row]["id"])
+
+    def cancel(self):
+        """Cancels every unfinished job of the sweep."""
+        self.doc = self.client.request("POST", f"/v1/sweeps/id/{self.id}/cancel")[2]
+        return self.doc
+
+    def wait(self, timeout=None, poll_interval=0.5):
+        """Blocks until every job of the sweep has ended; returns jobs()."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while self.refresh()["status"] != "finished":
+            if deadline and time.monotonic() > deadline:
+                raise TimeoutError(f"sweep {self.id} still {self.status} after {timeout} s")
+            time.sleep(poll_interval)
+        return self.jobs()
 
 
 class Job:

@@ -291,3 +291,71 @@ TEST_F(JobStoreTest, CountsTheCurrentRunsSolverEvents) {
 }
 
 }  // namespace kontakt::server
+
+namespace kontakt::server {
+
+namespace {
+
+SweepRecord new_sweep(int max_parallel, std::optional<std::string> key = std::nullopt,
+                      const std::string& fingerprint = "s") {
+  SweepRecord sweep;
+  sweep.id = new_job_id();
+  sweep.name = "study";
+  sweep.max_parallel = max_parallel;
+  sweep.idempotency_key = std::move(key);
+  sweep.fingerprint = fingerprint;
+  return sweep;
+}
+
+}  // namespace
+
+TEST_F(JobStoreTest, SweepRowsAreJobsInRowOrder) {
+  const auto [result, sweep] =
+      store.insert_sweep(new_sweep(2), {new_job("r0"), new_job("r1"), new_job("r2")});
+  EXPECT_EQ(result, InsertResult::Created);
+  EXPECT_EQ(sweep.n_rows, 3);
+  EXPECT_EQ(sweep.max_parallel, 2);
+  const auto jobs = store.sweep_jobs(sweep.id);
+  ASSERT_EQ(jobs.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(jobs[i].sweep_row, i);
+    EXPECT_EQ(jobs[i].sweep_id, sweep.id);
+    EXPECT_EQ(jobs[i].name, "r" + std::to_string(i));
+  }
+  EXPECT_EQ(store.sweep_counts(sweep.id), (std::map<std::string, int>{{"queued", 3}}));
+  EXPECT_EQ(store.find_sweep(sweep.id)->name, "study");
+  EXPECT_FALSE(store.find_sweep("nope"));
+}
+
+TEST_F(JobStoreTest, ClaimsKeepASweepWithinItsMaxParallelAndPassItForOthers) {
+  const auto sweep = store.insert_sweep(new_sweep(2), {new_job("r0"), new_job("r1"), new_job("r2")}).second;
+  const auto other = store.insert_job(new_job("other")).second;
+  const auto first = store.claim_next(), second = store.claim_next();
+  EXPECT_EQ(first->sweep_row, 0);
+  EXPECT_EQ(second->sweep_row, 1);
+  // Two rows run: the third waits, the job queued after the sweep goes ahead of it.
+  EXPECT_EQ(store.claim_next()->id, other.id);
+  EXPECT_FALSE(store.claim_next());
+  // A canceling row still counts; a finished one frees its place.
+  store.request_cancel(first->id);
+  EXPECT_FALSE(store.claim_next());
+  store.finish_job(first->id, JobStatus::Canceled, "", "", std::nullopt, {});
+  const auto third = store.claim_next();
+  ASSERT_TRUE(third);
+  EXPECT_EQ(third->sweep_row, 2);
+  EXPECT_EQ(store.sweep_counts(sweep.id),
+            (std::map<std::string, int>{{"canceled", 1}, {"running", 2}}));
+}
+
+TEST_F(JobStoreTest, SweepIdempotencyKeyReplaysOrConflicts) {
+  const auto created = store.insert_sweep(new_sweep(1, "k", "f1"), {new_job("a")}).second;
+  const auto [replayed, same] = store.insert_sweep(new_sweep(1, "k", "f1"), {new_job("b")});
+  EXPECT_EQ(replayed, InsertResult::Replayed);
+  EXPECT_EQ(same.id, created.id);
+  EXPECT_EQ(store.insert_sweep(new_sweep(1, "k", "f2"), {new_job("c")}).first,
+            InsertResult::KeyConflict);
+  EXPECT_EQ(store.sweep_jobs(created.id).size(), 1u);
+  EXPECT_EQ(store.find_sweep_by_key("k")->id, created.id);
+}
+
+}  // namespace kontakt::server

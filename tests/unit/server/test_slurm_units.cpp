@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <csignal>
 #include <fstream>
+#include <sstream>
 
 #include "server/command.hpp"
 #include "server/job_outcome.hpp"
@@ -169,6 +170,91 @@ TEST(SlurmProtocol, QueueAndRecords) {
   EXPECT_TRUE(slurm::is_finished("TIMEOUT"));
   EXPECT_FALSE(slurm::is_finished("COMPLETING"));
   EXPECT_FALSE(slurm::is_finished("PENDING"));
+}
+
+TEST(SlurmProtocol, ArraySbatchLineAndSpec) {
+  EXPECT_EQ(slurm::array_spec({0, 1, 2, 3}, 2), "0-3%2");
+  EXPECT_EQ(slurm::array_spec({0, 1, 3, 5, 6, 7}, 4), "0-1,3,5-7%4");
+  EXPECT_EQ(slurm::array_spec({7}, 1), "7%1");
+  const slurm::RunFiles files{"/data/sweeps/S/slurm"};
+  const auto argv = slurm::sbatch_array_argv("0123456789abcdef", files, {0, 1, 2, 4}, 3,
+                                             {.partition = "debug", .cpus = 2, .memory = "1G",
+                                              .time = "10"},
+                                             60);
+  EXPECT_EQ(argv[0], "sbatch");
+  EXPECT_TRUE(has(argv, "--parsable"));
+  EXPECT_TRUE(has(argv, "--array=0-2,4%3"));
+  EXPECT_TRUE(has(argv, "--job-name=kontakt-sweep-0123456789ab"));
+  EXPECT_TRUE(has(argv, "--comment=0123456789abcdef"));
+  EXPECT_TRUE(has(argv, "--output=/data/sweeps/S/slurm/slurm-%A_%a.out"));
+  EXPECT_TRUE(has(argv, "--chdir=/data/sweeps/S/slurm"));
+  EXPECT_TRUE(has(argv, "--signal=B:TERM@60"));
+  EXPECT_TRUE(has(argv, "--no-requeue"));
+  EXPECT_TRUE(has(argv, "--partition=debug"));
+  EXPECT_TRUE(has(argv, "--cpus-per-task=2"));
+  EXPECT_TRUE(has(argv, "--mem=1G"));
+  EXPECT_TRUE(has(argv, "--time=10"));
+  EXPECT_EQ(argv.back(), files.script().string());
+  EXPECT_EQ(slurm::array_task_id("77", 12), "77_12");
+}
+
+TEST(SlurmProtocol, ArrayScriptRunsTheTasksRowWithItsOutputThere) {
+  TempDir dir;
+  std::map<std::size_t, std::filesystem::path> rows;
+  for (std::size_t i : {0u, 2u}) {
+    rows[i] = dir.path() / ("row '" + std::to_string(i) + "'") / "slurm";
+    std::filesystem::create_directories(rows[i]);
+    std::ofstream(rows[i] / "run.sh") << "#!/bin/sh\necho row " << i << " ran\necho oops >&2\n";
+    std::filesystem::permissions(rows[i] / "run.sh", std::filesystem::perms::owner_all);
+  }
+  const std::filesystem::path script = dir.path() / "array.sh";
+  std::ofstream(script) << slurm::array_script("S", rows);
+  const auto task = [&](const std::string& id) {
+    return run_command({"env", "SLURM_ARRAY_JOB_ID=41", "SLURM_ARRAY_TASK_ID=" + id, "sh",
+                        script.string()},
+                       std::chrono::seconds(10));
+  };
+  ASSERT_TRUE(task("2").ok());
+  std::ifstream out(rows[2] / "slurm-41_2.out");
+  std::stringstream text;
+  text << out.rdbuf();
+  EXPECT_EQ(text.str(), "row 2 ran\noops\n");
+  EXPECT_FALSE(std::filesystem::exists(rows[0] / "slurm-41_0.out"));
+  const CommandResult missing = task("1");  // a row left out of the array
+  EXPECT_EQ(missing.exit.code, 2);
+  EXPECT_NE(missing.err.find("kontaktd sweep S has no row 1"), std::string::npos);
+}
+
+TEST(SlurmProtocol, ArrayTasksInSqueueAndJobcomp) {
+  // Without --array squeue lists an array's pending tasks as one line.
+  const auto jobs = slurm::parse_squeue(
+      "50_0|RUNNING|None|S\n50_[2-4,7%2]|PENDING|JobArrayTaskLimit|S\n50_1|COMPLETED|None|S\n"
+      "51_[x-y]|PENDING|None|T\n");
+  EXPECT_EQ(jobs.at("50_0").state, "RUNNING");
+  EXPECT_EQ(jobs.at("50_1").state, "COMPLETED");
+  for (const char* pending : {"50_2", "50_3", "50_4", "50_7"}) {
+    ASSERT_TRUE(jobs.contains(pending)) << pending;
+    EXPECT_EQ(jobs.at(pending).reason, "JobArrayTaskLimit");
+    EXPECT_EQ(jobs.at(pending).comment, "S");
+  }
+  EXPECT_FALSE(jobs.contains("50_5"));
+  EXPECT_TRUE(jobs.contains("51_[x-y]"));  // not understood: kept as it is
+  const std::string log =
+      "JobId=60 UserId=root(0) JobState=COMPLETED Partition=debug ArrayJobId=58 "
+      "ArrayTaskId=1 ExitCode=0:0\n"
+      "JobId=61 UserId=root(0) JobState=FAILED Partition=debug ArrayJobId=58 "
+      "ArrayTaskId=2 ExitCode=3:0\n"
+      "JobId=58 UserId=root(0) JobState=CANCELLED Partition=debug ArrayJobId=58 "
+      "ArrayTaskId=0 ExitCode=0:15\n";
+  EXPECT_EQ(slurm::find_in_jobcomp(log, "58_2")->state, "FAILED");
+  EXPECT_EQ(slurm::find_in_jobcomp(log, "58_2")->exit->code, 3);
+  EXPECT_EQ(slurm::find_in_jobcomp(log, "58_0")->state, "CANCELLED");
+  EXPECT_EQ(slurm::find_in_jobcomp(log, "60")->state, "COMPLETED");
+  EXPECT_FALSE(slurm::find_in_jobcomp(log, "58_3"));
+  const auto shown = slurm::parse_scontrol_job(
+      "JobId=61 ArrayJobId=58 ArrayTaskId=2 JobName=kontakt-sweep-x\n   JobState=PENDING "
+      "Reason=JobArrayTaskLimit Dependency=(null)\n");
+  EXPECT_EQ(shown->state, "PENDING");
 }
 
 TEST(SlurmProtocol, VerdictWithoutAnOutcome) {
