@@ -144,6 +144,20 @@ class Daemon:
         return events
 
 
+def wait_iterating(d, job_id, timeout=30):
+    """The job's document once it runs and has reported an iteration (an AssertionError when
+    it ends first)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        _, _, job = d.json("GET", f"/v1/jobs/{job_id}")
+        if job["status"] == "running" and job["progress"]["iteration"] > 0:
+            return job
+        if job["status"] not in ("queued", "running"):
+            raise AssertionError(f"job ended early: {job}")
+        time.sleep(0.02)
+    raise TimeoutError(f"job {job_id} did not start iterating within {timeout} s")
+
+
 def post_sweep(d, body, headers=None):
     """POST /v1/sweeps with `body` as JSON."""
     h = {"Content-Type": "application/json"}

@@ -12,26 +12,13 @@ from openapi_check import validate
 KONTAKTD = None
 
 
-def wait_running_with_progress(d, job_id, timeout=30):
-    """Waits until the job runs and has reported at least one iteration."""
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        _, _, job = d.json("GET", f"/v1/jobs/{job_id}")
-        if job["status"] == "running" and job["progress"]["iteration"] > 0:
-            return job
-        if job["status"] not in ("queued", "running"):
-            raise AssertionError(f"job ended early: {job}")
-        time.sleep(0.02)
-    raise TimeoutError("job did not start")
-
-
 class CancelTest(unittest.TestCase):
     def test_cancel_queued_and_running(self):
         d = harness.Daemon(KONTAKTD, args=["--workers", "1"]).start()
         try:
             _, _, running = d.submit(decks.long_running())
             _, _, queued = d.submit(decks.tiny())
-            wait_running_with_progress(d, running["id"])
+            harness.wait_iterating(d, running["id"])
             # Queued behind the one worker: canceled at once, 200, and it never runs.
             status, _, doc = d.json("POST", f"/v1/jobs/{queued['id']}/cancel")
             self.assertEqual((status, doc["status"]), (200, "canceled"))
@@ -84,7 +71,7 @@ class CrashTest(unittest.TestCase):
         with harness.restartable(KONTAKTD, ["--workers", "1"]) as d:
             ids = [d.submit(decks.long_running(increments=150))[2]["id"]]
             ids += [d.submit(decks.beam(3))[2]["id"] for _ in range(4)]
-            wait_running_with_progress(d, ids[0])
+            harness.wait_iterating(d, ids[0])
             d.kill9()
             d.start()  # same data folder
             for job_id in ids:
@@ -100,7 +87,7 @@ class CrashTest(unittest.TestCase):
     def test_repeated_crashes_fail_the_job_as_worker_lost(self):
         with harness.restartable(KONTAKTD, ["--workers", "1", "--max-attempts", "1"]) as d:
             job_id = d.submit(decks.long_running())[2]["id"]
-            wait_running_with_progress(d, job_id)
+            harness.wait_iterating(d, job_id)
             d.kill9()
             d.start()
             job = d.wait(job_id, timeout=30)
@@ -110,7 +97,7 @@ class CrashTest(unittest.TestCase):
         with harness.restartable(KONTAKTD, ["--workers", "1", "--drain-timeout", "0.2"]) as d:
             running = d.submit(decks.long_running(increments=150))[2]["id"]
             queued = d.submit(decks.tiny())[2]["id"]
-            wait_running_with_progress(d, running)
+            harness.wait_iterating(d, running)
             t0 = time.monotonic()
             self.assertEqual(d.terminate(timeout=20), 0)
             self.assertLess(time.monotonic() - t0, 5)

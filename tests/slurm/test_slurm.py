@@ -20,13 +20,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(HERE), "server"))
 
 import decks  # noqa: E402
 import kontaktd_harness as harness  # noqa: E402
-from kontaktd_harness import post_sweep, sweep_jobs, wait_sweep  # noqa: E402
+from kontaktd_harness import post_sweep, sweep_jobs, wait_iterating, wait_sweep  # noqa: E402
 from openapi_check import validate  # noqa: E402
 from slurm_cluster import LocalSlurm  # noqa: E402
 
 KONTAKTD = None
 SLURM = None
-FINAL = ("succeeded", "failed", "canceled")
 
 
 def setUpModule():
@@ -66,19 +65,6 @@ def solver_pid(d, job_id):
         except OSError:
             continue
     raise AssertionError("no solver process for job " + job_id)
-
-
-def wait_iterating(d, job_id, timeout=60):
-    """Until the job runs in Slurm and has reported an iteration."""
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        _, _, job = d.json("GET", f"/v1/jobs/{job_id}")
-        if job["status"] == "running" and job["progress"]["iteration"] > 0:
-            return job
-        if job["status"] in FINAL:
-            raise AssertionError(f"job ended early: {job}")
-        time.sleep(0.05)
-    raise TimeoutError(f"job {job_id} did not start in Slurm")
 
 
 def assert_no_event_twice(test, d, job_id):
@@ -156,7 +142,7 @@ class SlurmExecutorTest(unittest.TestCase):
         state and exit signal are the verdict."""
         d = self.d
         _, _, job = d.submit(decks.long_running(increments=1000))
-        wait_iterating(d, job["id"])
+        wait_iterating(d, job["id"], timeout=60)
         sid = slurm_id(d, job["id"])
         os.kill(solver_pid(d, job["id"]), 9)
         final = d.wait(job["id"], timeout=60)
@@ -169,7 +155,7 @@ class SlurmExecutorTest(unittest.TestCase):
         fails, saying so; it is not taken for the daemon's cancel."""
         d = self.d
         _, _, job = d.submit(decks.long_running(increments=1000))
-        wait_iterating(d, job["id"])
+        wait_iterating(d, job["id"], timeout=60)
         subprocess.run(["scancel", slurm_id(d, job["id"])], env=SLURM.env, check=True)
         final = d.wait(job["id"], timeout=60)
         self.assertEqual(final["status"], "failed")
@@ -178,7 +164,7 @@ class SlurmExecutorTest(unittest.TestCase):
     def test_cancel_a_running_job(self):
         d = self.d
         _, _, job = d.submit(decks.long_running(increments=1000))
-        wait_iterating(d, job["id"])
+        wait_iterating(d, job["id"], timeout=60)
         status, _, _ = d.json("POST", f"/v1/jobs/{job['id']}/cancel")
         self.assertIn(status, (200, 202))
         final = d.wait(job["id"], timeout=60)
@@ -201,7 +187,7 @@ class SlurmExecutorTest(unittest.TestCase):
         # Long enough to outlast the test (canceled at its end).
         busy = [d.submit(decks.long_running(increments=5000))[2] for _ in range(2)]
         for job in busy:
-            wait_iterating(d, job["id"])
+            wait_iterating(d, job["id"], timeout=60)
         _, _, pending = d.submit(decks.tiny())
         deadline = time.monotonic() + 20
         while not os.path.exists(os.path.join(d.data_dir, "jobs", pending["id"], "slurm",
@@ -286,7 +272,7 @@ class SweepArrayTest(unittest.TestCase):
         array = array_id_of(d, sweep["id"])
         jobs = sweep_jobs(d, sweep["id"])
         for job in jobs[:2]:
-            wait_iterating(d, job["id"])
+            wait_iterating(d, job["id"], timeout=60)
         self.assertEqual([j["status"] for j in sweep_jobs(d, sweep["id"])][2:], ["queued"] * 2)
         self.assertEqual(sorted(array_tasks(array, "PENDING")), [f"{array}_2", f"{array}_3"])
         status, _, doc = d.json("POST", f"/v1/sweeps/id/{sweep['id']}/cancel")
@@ -329,7 +315,7 @@ class RestartTest(unittest.TestCase):
                 "rows": [{"load": -100.0 * (i + 1)} for i in range(6)], "max_parallel": 2})
             array = array_id_of(d, sweep["id"])
             jobs = sweep_jobs(d, sweep["id"])
-            wait_iterating(d, jobs[0]["id"])
+            wait_iterating(d, jobs[0]["id"], timeout=60)
             d.kill9()
             # Slurm goes on without the daemon: tasks end and others start.
             deadline = time.monotonic() + 40
@@ -357,7 +343,7 @@ class RestartTest(unittest.TestCase):
         try:
             _, _, long_job = d.submit(decks.long_running(increments=1200))
             _, _, short_job = d.submit(decks.long_running(increments=150, nx=4))
-            wait_iterating(d, long_job["id"])
+            wait_iterating(d, long_job["id"], timeout=60)
             d.kill9()
             # The short job ends while no daemon watches; the long one is still running.
             deadline = time.monotonic() + 30
@@ -387,7 +373,7 @@ class RestartTest(unittest.TestCase):
         d.start()
         try:
             _, _, job = d.submit(decks.long_running(increments=800))
-            wait_iterating(d, job["id"])
+            wait_iterating(d, job["id"], timeout=60)
             t0 = time.monotonic()
             self.assertEqual(d.terminate(timeout=20), 0)
             self.assertLess(time.monotonic() - t0, 10)  # not the 60 s drain timeout
