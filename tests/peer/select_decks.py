@@ -365,6 +365,20 @@ def has_nlgeom_step(path, text=None):
                for k, p, _ in records(path, text=text))
 
 
+# ccx's procedure keywords (each step has one; *CREEP is a material card, not a procedure).
+PROCEDURES = {"STATIC", "FREQUENCY", "BUCKLE", "DYNAMIC", "MODAL DYNAMIC", "STEADY STATE DYNAMICS",
+              "COMPLEX FREQUENCY", "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT",
+              "UNCOUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "GREEN", "SENSITIVITY",
+              "ELECTROMAGNETICS", "CFD", "MASS FLOW", "NO ANALYSIS", "SUBSTRUCTURE GENERATE"}
+
+
+def is_static_only(path):
+    """The coverage report's population (coverage.py): the deck (its *INCLUDEs expanded) has
+    at least one procedure and every procedure keyword in it is *STATIC."""
+    procedures = {k for k, _, _ in records(path) if k in PROCEDURES}
+    return procedures == {"STATIC"}
+
+
 FILE_REQUESTS = {"NODE FILE", "EL FILE", "CONTACT FILE", "NODE OUTPUT", "ELEMENT OUTPUT",
                  "CONTACT OUTPUT"}
 
