@@ -17,6 +17,9 @@ Decks (E = 210000, nu = 0.3):
               the inner nodes pushed outwards (local dof 1 *CLOAD): plane-stress Lame.
   cyl_tilted  the same sector with the whole model rotated (axis along (1, 1, 1)), the
               transform's axis points rotated with it: the same local answers.
+  nlgeom/rect_nlgeom  rect_disp under NLGEOM, x'=1 moved by 0.1 (10 % strain) in increments of
+              0.25 (the local frames stay fixed, as in ccx; the increments' start values are
+              read in the local basis): run_peer.py --nlgeom --suite OUTDIR/nlgeom.
 
 Usage: make_transform_decks.py OUTDIR
 """
@@ -55,7 +58,7 @@ def prints(deck, nset="ALL"):
 
 
 def cube(load):
-    """rect_force (load='force') or rect_disp (load='disp')."""
+    """rect_force (load='force'), rect_disp (load='disp') or rect_nlgeom (load='nlgeom')."""
     mesh = mg.box_mesh("C3D8", (2, 2, 2))
     r = rotation((1.0, 2.0, 3.0), 40.0)
     rotate_mesh(mesh, r)
@@ -65,7 +68,9 @@ def cube(load):
     deck.model_extra += ["*TRANSFORM, NSET=BOUNDARY, TYPE=R",
                          fmt_point(list(r[:, 0]) + list(r[:, 1]))]
     rows = [("XMIN", 1, 1), ("YMIN", 2, 2), ("ZMIN", 3, 3)]
-    if load == "disp":
+    if load == "nlgeom":
+        deck.boundary(rows + [("XMAX", 1, 1, 0.1)])
+    elif load == "disp":
         deck.boundary(rows + [("XMAX", 1, 1, 1e-3)])
     else:
         deck.boundary(rows)
@@ -101,7 +106,11 @@ def main(argv):
              "cyl_z": sector(False), "cyl_tilted": sector(True)}
     for name, deck in decks.items():
         deck.write(os.path.join(out, name + ".inp"))
-    print(f"{len(decks)} decks in {out}")
+    os.makedirs(os.path.join(out, "nlgeom"), exist_ok=True)
+    text = cube("nlgeom").text().replace("*STEP\n*STATIC\n", "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n")
+    with open(os.path.join(out, "nlgeom", "rect_nlgeom.inp"), "w") as f:
+        f.write(text)
+    print(f"{len(decks)} decks in {out}, 1 in {os.path.join(out, 'nlgeom')}")
     return 0
 
 
