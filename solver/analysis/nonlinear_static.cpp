@@ -189,8 +189,10 @@ class NonlinearStatic {
     const VecX u_predicted = predictor_.start(u_, increments_->increment());
     a.x.resize(dofs.n_equations());
     a.g_old.resize(dofs.n_prescribed());
-    for (int eq = 0; eq < dofs.n_equations(); ++eq) a.x[eq] = u_predicted[dofs.equation_dof(eq)];
-    for (int k = 0; k < dofs.n_prescribed(); ++k) a.g_old[k] = u_predicted[dofs.prescribed_dof(k)];
+    for (int eq = 0; eq < dofs.n_equations(); ++eq)
+      a.x[eq] = dofs.unknown_value(u_predicted, dofs.equation_dof(eq));
+    for (int k = 0; k < dofs.n_prescribed(); ++k)
+      a.g_old[k] = dofs.unknown_value(u_predicted, dofs.prescribed_dof(k));
     a.u = dofs.expand(a.x, a.g_old);
     if (!contact_.empty()) {
       timed(times_.contact_search, [&] {

@@ -4,9 +4,8 @@ namespace kontakt::analysis {
 
 std::string singular_mode_warning(const model::Model& model, const assembly::DofMap& dofs,
                                   const linsolve::SpdSolveReport& report) {
-  std::string where = report.singular_equation >= 0
-                          ? " at " + dofs.describe(model, dofs.equation_dof(report.singular_equation))
-                          : "";
+  const int eq = report.singular_equation;
+  std::string where = eq >= 0 ? " at " + dofs.describe_unknown(model, dofs.equation_dof(eq)) : "";
   return "the stiffness matrix has a zero-energy mode" + where +
          " (hourglassing of reduced-integration elements, a missing constraint or a body held "
          "only by contact that does not touch) that the loads do not excite; solved with "
@@ -17,7 +16,7 @@ SolverError singular_system_error(const model::Model& model, const assembly::Dof
                                   const linsolve::SingularMatrix& e) {
   std::string msg = e.what();
   if (e.equation() >= 0)
-    msg += " at " + dofs.describe(model, dofs.equation_dof(e.equation())) +
+    msg += " at " + dofs.describe_unknown(model, dofs.equation_dof(e.equation())) +
            ": it is not held by any element stiffness, contact or boundary condition";
   else
     msg += ": the model has an unconstrained rigid-body mode or a mechanism";

@@ -22,9 +22,14 @@ Real load_factor(const model::Model& model, int amplitude, Real step_time, Real 
 VecX concentrated_forces(const model::Model& model, const model::Step& step, Real step_time,
                          Real total_time, Real ramp) {
   VecX f = VecX::Zero(3 * model.n_nodes());
-  for (const auto& load : step.cloads)
-    f[3 * load.node + load.dof] +=
-        load.value * load_factor(model, load.amplitude, step_time, total_time, ramp);
+  for (const auto& load : step.cloads) {
+    const Real value = load.value * load_factor(model, load.amplitude, step_time, total_time, ramp);
+    const auto frame = model.local_frames.find(load.node);  // a local component (*TRANSFORM)
+    if (frame == model.local_frames.end())
+      f[3 * load.node + load.dof] += value;
+    else
+      f.segment<3>(3 * load.node) += value * frame->second.col(load.dof);
+  }
   return f;
 }
 
@@ -60,12 +65,14 @@ VecX prescribed_values(const model::Model& model, const model::Step& step,
   for (const auto& bc : step.boundaries) {  // later entries win, as in ccx
     const int d = 3 * bc.node + bc.dof;
     Real value;
-    if (bc.hold_previous)
-      value = u_previous[d];
-    else if (bc.amplitude >= 0)
+    if (bc.hold_previous) {
+      value = dofs.unknown_value(u_previous, d);
+    } else if (bc.amplitude >= 0) {
       value = bc.value * amplitude_factor(model, bc.amplitude, step_time, total_time);
-    else
-      value = u_start[d] + ramp * (bc.value - u_start[d]);
+    } else {
+      const Real start = dofs.unknown_value(u_start, d);
+      value = start + ramp * (bc.value - start);
+    }
     g[dofs.prescribed_slot(d)] = value;
   }
   return g;

@@ -1,6 +1,7 @@
 #include "analysis/support_check.hpp"
 
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <string>
 
@@ -45,11 +46,17 @@ std::vector<UnsupportedBody> unsupported_bodies(const model::Model& model,
       for (int n : nodes) bodies.join(nodes.front(), n);
     }
 
-  // A body is held in a direction when some dof in it is prescribed in that direction.
+  // A body is held in a direction when some dof in it is prescribed in that direction; a
+  // prescribed local component (*TRANSFORM) counts for every global direction it has a part
+  // in (a coarse check: the factorisation reports what it lets through).
   std::vector<std::array<char, 3>> held(n_nodes, {0, 0, 0});
   for (int slot = 0; slot < dofs.n_prescribed(); ++slot) {
     const int d = dofs.prescribed_dof(slot);
-    held[bodies.find(d / 3)][d % 3] = 1;
+    const Mat3* frame = dofs.local_frame(d / 3);
+    for (int c = 0; c < 3; ++c) {
+      const bool part = frame ? std::abs((*frame)(c, d % 3)) > 1e-8 : c == d % 3;
+      if (part) held[bodies.find(d / 3)][c] = 1;
+    }
   }
   std::vector<UnsupportedBody> out;
   for (int node = 0; node < n_nodes; ++node) {

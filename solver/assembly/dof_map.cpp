@@ -20,10 +20,26 @@ std::vector<char> attached_dofs(const model::Model& model) {
   return attached;
 }
 
+/// Terms sorted by unknown with repeated references to the same unknown summed.
+std::vector<DofTerm> merged(std::vector<DofTerm> terms) {
+  std::sort(terms.begin(), terms.end(), [](const DofTerm& a, const DofTerm& b) {
+    return std::tie(a.is_prescribed, a.index) < std::tie(b.is_prescribed, b.index);
+  });
+  std::vector<DofTerm> out;
+  for (const DofTerm& t : terms) {
+    if (!out.empty() && out.back().index == t.index && out.back().is_prescribed == t.is_prescribed)
+      out.back().coef += t.coef;
+    else
+      out.push_back(t);
+  }
+  return out;
+}
+
 }  // namespace
 
 DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries) {
   const int n = 3 * model.n_nodes();
+  frames_ = model.local_frames;
   const std::vector<char> attached = attached_dofs(model);
   std::vector<Kind> kind(n);
   for (int d = 0; d < n; ++d) kind[d] = attached[d] ? Kind::Free : Kind::Inactive;
@@ -45,12 +61,12 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     const int d = 3 * lead.node + lead.dof;
     if (kind[d] == Kind::Prescribed)
       throw InputError(eq.where, eq.keyword,
-                       "the dependent dof of this constraint (" + describe(model, d) +
+                       "the dependent dof of this constraint (" + describe_unknown(model, d) +
                            ") is also prescribed by *BOUNDARY in this step");
     if (dependent_of.count(d)) {
       const Equation& first = *dependent_of.at(d);
       throw InputError(eq.where, eq.keyword,
-                       "dof " + describe(model, d) +
+                       "dof " + describe_unknown(model, d) +
                            " is the dependent term of two equations (the other: " +
                            first.keyword + " at " + first.where.file + ":" +
                            std::to_string(first.where.line) + ")");
@@ -58,6 +74,12 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     dependent_of[d] = &eq;
     kind[d] = Kind::Dependent;
   }
+  for (const auto& eq : model.equations)  // ccx's *TIE ties global components
+    for (const auto& term : eq.terms)
+      if (eq.keyword != "*EQUATION" && frames_.contains(term.node))
+        throw InputError(eq.where, eq.keyword,
+                         "node " + std::to_string(model.mesh.node_ids[term.node]) +
+                             " has a *TRANSFORM; tying transformed nodes is not supported");
   for (const auto& eq : model.equations)
     for (std::size_t k = 1; k < eq.terms.size(); ++k) {
       const int d = 3 * eq.terms[k].node + eq.terms[k].dof;
@@ -81,7 +103,7 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     if (state[d] == 2) return expr[d];
     if (state[d] == 1)
       throw InputError(dependent_of.at(d)->where, dependent_of.at(d)->keyword,
-                       "equations form a cycle through " + describe(model, d) +
+                       "equations form a cycle through " + describe_unknown(model, d) +
                            " (each dependent dof is expressed through the next)");
     state[d] = 1;
     std::vector<DofTerm> out;
@@ -102,35 +124,48 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
         break;
       }
     }
-    // Merge repeated references to the same unknown.
-    std::sort(out.begin(), out.end(), [](const DofTerm& a, const DofTerm& b) {
-      return std::tie(a.is_prescribed, a.index) < std::tie(b.is_prescribed, b.index);
-    });
-    std::vector<DofTerm> merged;
-    for (const DofTerm& t : out) {
-      if (!merged.empty() && merged.back().index == t.index &&
-          merged.back().is_prescribed == t.is_prescribed)
-        merged.back().coef += t.coef;
-      else
-        merged.push_back(t);
-    }
-    expr[d] = std::move(merged);
+    expr[d] = merged(std::move(out));
     state[d] = 2;
     return expr[d];
   };
 
+  // Global row d of a transformed node: sum over its local unknowns j of R(c, j) * u_j.
+  auto row = [&](int d) {
+    const auto frame = frames_.find(d / 3);
+    if (frame == frames_.end()) return resolve(resolve, d);
+    std::vector<DofTerm> out;
+    for (int j = 0; j < 3; ++j) {
+      const Real r = frame->second(d % 3, j);
+      if (r == 0) continue;
+      for (const DofTerm& t : resolve(resolve, 3 * (d / 3) + j))
+        out.push_back({t.index, r * t.coef, t.is_prescribed});
+    }
+    return merged(std::move(out));
+  };
+
   start_.assign(n + 1, 0);
+  terms_.clear();
   for (int d = 0; d < n; ++d) {
-    const auto& e = resolve(resolve, d);
-    start_[d + 1] = start_[d] + static_cast<int>(e.size());
+    const std::vector<DofTerm> e = row(d);
+    terms_.insert(terms_.end(), e.begin(), e.end());
+    start_[d + 1] = static_cast<int>(terms_.size());
   }
-  terms_.reserve(start_[n]);
-  for (int d = 0; d < n; ++d) terms_.insert(terms_.end(), expr[d].begin(), expr[d].end());
+}
+
+Real DofMap::unknown_value(const VecX& u, int unknown) const {
+  const auto frame = frames_.find(unknown / 3);
+  if (frame == frames_.end()) return u[unknown];
+  return frame->second.col(unknown % 3).dot(u.segment<3>(3 * (unknown / 3)));
+}
+
+const Mat3* DofMap::local_frame(int node) const {
+  const auto frame = frames_.find(node);
+  return frame == frames_.end() ? nullptr : &frame->second;
 }
 
 bool DofMap::is_free(int dof) const {
-  return start_[dof + 1] - start_[dof] == 1 && !terms_[start_[dof]].is_prescribed &&
-         equation_dof_[terms_[start_[dof]].index] == dof;
+  return !frames_.contains(dof / 3) && start_[dof + 1] - start_[dof] == 1 &&
+         !terms_[start_[dof]].is_prescribed && equation_dof_[terms_[start_[dof]].index] == dof;
 }
 
 Real DofMap::offset(int dof, const VecX& prescribed_values) const {
@@ -164,6 +199,12 @@ bool DofMap::same_structure(const DofMap& other) const {
 std::string DofMap::describe(const model::Model& model, int dof) const {
   return "node " + std::to_string(model.mesh.node_ids[dof / 3]) + " dof " +
          component_name(dof % 3);
+}
+
+std::string DofMap::describe_unknown(const model::Model& model, int unknown) const {
+  if (!frames_.contains(unknown / 3)) return describe(model, unknown);
+  return "node " + std::to_string(model.mesh.node_ids[unknown / 3]) + " local dof " +
+         std::to_string(unknown % 3 + 1);
 }
 
 }  // namespace kontakt::assembly

@@ -6,9 +6,16 @@
 //   dependent   u_d = sum_k c_k * (free or prescribed dof)   (*EQUATION, first term dependent)
 //   inactive    u_d = 0                                      (node not attached to any element)
 // so u = T x + g, with T and g stored row by row. Element matrices are reduced as T^T K T.
+//
+// The unknowns are nodal components in each node's own basis: the global axes, or the local
+// axes R of a *TRANSFORM node (Model::local_frames), whose *BOUNDARY, *EQUATION and *CLOAD
+// dofs are local components. A transformed node's global rows are u = R (its local
+// unknowns), so a prescribed local component is an ordinary prescribed unknown (with its
+// reaction) and a local roller leaves the other two local components free.
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/types.hpp"
@@ -38,11 +45,17 @@ class DofMap {
   const DofTerm* terms_end(int dof) const { return terms_.data() + start_[dof + 1]; }
   bool is_free(int dof) const;
   bool is_prescribed(int dof) const { return prescribed_slot_[dof] >= 0; }
-  /// Global dof behind prescribed slot s, and the slot of a global dof (-1 if none).
+  /// Unknown (3 * node + component in the node's basis: local for a transformed node) behind
+  /// prescribed slot s, and the slot of an unknown (-1 if none).
   int prescribed_dof(int slot) const { return prescribed_dof_[slot]; }
   int prescribed_slot(int dof) const { return prescribed_slot_[dof]; }
-  /// Global dof of free equation eq.
+  /// Unknown (as prescribed_dof) of free equation eq.
   int equation_dof(int eq) const { return equation_dof_[eq]; }
+  /// The value of unknown `unknown` (as prescribed_dof) in global displacements `u`: R^T u
+  /// at a transformed node, u itself elsewhere.
+  Real unknown_value(const VecX& u, int unknown) const;
+  /// The node's local axes (columns), or nullptr when its basis is the global one.
+  const Mat3* local_frame(int node) const;
 
   /// Full displacement vector u = T x + g for reduced solution x and prescribed values.
   VecX expand(const VecX& x, const VecX& prescribed_values) const;
@@ -55,6 +68,8 @@ class DofMap {
 
   /// "node 17 dof x" style description of a global dof for messages.
   std::string describe(const model::Model& model, int dof) const;
+  /// The same for an unknown: "node 17 local dof 2" at a transformed node.
+  std::string describe_unknown(const model::Model& model, int unknown) const;
 
  private:
   std::vector<int> start_;
@@ -62,6 +77,7 @@ class DofMap {
   std::vector<int> prescribed_slot_;
   std::vector<int> prescribed_dof_;
   std::vector<int> equation_dof_;
+  std::unordered_map<int, Mat3> frames_;
   int n_equations_ = 0;
 };
 

@@ -33,6 +33,9 @@ void handle_contact_pair(const Record&, DeckState&);
 // kw_tie.cpp
 void handle_tie(const Record&, DeckState&);
 
+// kw_transform.cpp
+void handle_transform(const Record&, DeckState&);
+
 // kw_step.cpp
 void handle_step(const Record&, DeckState&);
 void handle_static(const Record&, DeckState&);

@@ -34,6 +34,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"FRICTION", A, Inter, handle_friction},  // in a step: after *CHANGE FRICTION
     {"CONTACTPAIR", M, None, handle_contact_pair},
     {"TIE", M, None, handle_tie},
+    {"TRANSFORM", M, None, handle_transform},
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},
     {"EQUATION", M, None, handle_equation},
     {"AMPLITUDE", A, None, handle_amplitude},

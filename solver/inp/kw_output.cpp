@@ -76,7 +76,7 @@ void warn_file_layout_params(const Record& record, DeckState& state) {
 
 model::FileRequest file_request(const Record& record, DeckState& state) {
   check_params(record, {"FREQUENCY", "GLOBAL", "OUTPUT", "NSET", "ELSET", "POSITION"});
-  (void)yes_no(record, "GLOBAL", true);  // no transforms: global and local coincide
+  (void)yes_no(record, "GLOBAL", true);  // *NODE FILE checks it against *TRANSFORM
   warn_file_layout_params(record, state);
   read_frequency(record, state);
   model::FileRequest request;
@@ -189,6 +189,9 @@ void handle_contact_file(const Record& record, DeckState& state) {
 
 void handle_node_file(const Record& record, DeckState& state) {
   auto request = file_request(record, state);
+  if (!yes_no(record, "GLOBAL", true) && !state.model.local_frames.empty())
+    fail(record, "GLOBAL=NO: results files hold global components only (*TRANSFORM nodes "
+                 "print local components with *NODE PRINT)");
   // *NODE OUTPUT is ccx's synonym of *NODE FILE: one kind for the wipe rule.
   if (first_in_step(state, "NODEFILE")) state.active.node_files.clear();
   state.active.node_files.push_back(std::move(request));

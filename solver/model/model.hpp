@@ -141,7 +141,7 @@ struct PrintRequest {
   std::string set;                ///< NSET= / ELSET= name (upper case)
   std::vector<std::string> variables;  ///< upper case: U, RF, S, E, EVOL, ENER, ...
   Totals totals = Totals::No;
-  bool global = false;            ///< GLOBAL= (ccx default NO for prints; no transforms yet)
+  bool global = false;            ///< GLOBAL= (ccx default NO: transformed nodes print local)
   int frequency = 1;
   SourceLoc where;
 };
@@ -198,6 +198,10 @@ struct Model {
   std::vector<SolidSection> sections;
   std::vector<Amplitude> amplitudes;
   std::vector<Equation> equations;
+  /// Local nodal systems of *TRANSFORM (the last one naming a node wins, as in ccx): internal
+  /// node -> its local axes as columns (model::local_frame). *BOUNDARY, *CLOAD and *EQUATION
+  /// dofs of these nodes are local components.
+  std::unordered_map<int, Mat3> local_frames;
   std::vector<SurfaceInteraction> interactions;
   std::vector<ContactPair> contact_pairs;  ///< all pairs of the deck (model level, as in ccx)
   /// *TIE, deck order; contact::apply_ties turns them into `equations` before the analysis.

@@ -98,6 +98,8 @@ void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
   const auto& ids = model_.mesh.node_ids;
   // Labels a GENERATE range named without a node print as zero rows, in label order (ccx).
   const std::vector<int> absent = absent_labels(it->second, model_.mesh.node_index);
+  // ccx prints a transformed node's vectors in its local system, flagged " L", unless
+  // GLOBAL=YES.
   auto rows = [&](const MatX3& m) {
     KONTAKT_REQUIRE(m.rows() == model_.n_nodes(), "DatWriter: nodal array has wrong size");
     auto next_absent = absent.begin();
@@ -109,8 +111,12 @@ void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
     for (int n : nodes) {
       zero_rows_below(ids[static_cast<std::size_t>(n)]);
       out_ << i10(ids[static_cast<std::size_t>(n)]);
-      for (int c = 0; c < 3; ++c) out_ << ' ' << fortran_e13_6(m(n, c));
-      out_ << '\n';
+      const auto frame = r.global ? model_.local_frames.end() : model_.local_frames.find(n);
+      const bool local = frame != model_.local_frames.end();
+      const Vec3 v = local ? Vec3(frame->second.transpose() * m.row(n).transpose())
+                           : Vec3(m.row(n).transpose());
+      for (int c = 0; c < 3; ++c) out_ << ' ' << fortran_e13_6(v[c]);
+      out_ << (local ? " L\n" : "\n");
     }
     zero_rows_below(std::numeric_limits<int>::max());
   };

@@ -58,6 +58,9 @@ def parse_blocks(text):
         if not blocks:
             raise ValueError(f"line {number}: data row before any block header: {line!r}")
         fields = line.split()
+        local = fields[-1] == "L"  # ccx's mark of a vector in a *TRANSFORM node's local system
+        if local:
+            fields.pop()
         header = blocks[-1][0]
         try:
             if header.startswith("total"):
@@ -68,7 +71,7 @@ def parse_blocks(text):
                 key, values = (int(fields[0]),), fields[1:]
         except (ValueError, IndexError):
             raise ValueError(f"line {number}: row without integer key in {header!r}: {line!r}")
-        blocks[-1][1].append((key, [_number(v) for v in values]))
+        blocks[-1][1].append((key + (("L",) if local else ()), [_number(v) for v in values]))
     return blocks
 
 

@@ -112,10 +112,11 @@ def work_root(work, source_dir):
         os.path.abspath(source_dir).encode()).hexdigest()[:8])
 
 
-def ccx_reference(source_dir, name, args):
-    """Path of ccx 2.20's .dat for the deck, computed once per deck content (cached)."""
+def ccx_reference(source_dir, name, args, text=None):
+    """Path of ccx 2.20's .dat for the deck (or for `text`, standing for it), computed once
+    per deck content (cached)."""
     work = work_root(args.work, source_dir)
-    text = deck_text(source_dir, name, args)
+    text = deck_text(source_dir, name, args) if text is None else text
     cached = os.path.join(work, "ccx_cache", f"{name}-{deck_digest(source_dir, name, text)}.dat")
     if os.path.exists(cached) and (not args.frd or os.path.exists(cached[:-4] + ".frd")):
         return cached

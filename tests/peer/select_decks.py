@@ -78,6 +78,7 @@ SUPPORTED_KEYWORDS = {
     "EXPANSION", "SOLID SECTION", "INITIAL CONDITIONS", "TEMPERATURE", "BOUNDARY", "CLOAD",
     "DLOAD", "EQUATION", "AMPLITUDE", "STEP", "STATIC", "END STEP", "NODE PRINT", "EL PRINT",
     "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT", "CONTROLS",
+    "TRANSFORM",
 }
 FORBIDDEN_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
 CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
@@ -363,6 +364,20 @@ def has_nlgeom_step(path, text=None):
     """True when a *STEP of the deck (or of `text`, standing for it) has NLGEOM (not =NO)."""
     return any(k == "STEP" and p.get("NLGEOM", "NO").upper() != "NO"
                for k, p, _ in records(path, text=text))
+
+
+# ccx's procedure keywords (each step has one; *CREEP is a material card, not a procedure).
+PROCEDURES = {"STATIC", "FREQUENCY", "BUCKLE", "DYNAMIC", "MODAL DYNAMIC", "STEADY STATE DYNAMICS",
+              "COMPLEX FREQUENCY", "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT",
+              "UNCOUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "GREEN", "SENSITIVITY",
+              "ELECTROMAGNETICS", "CFD", "MASS FLOW", "NO ANALYSIS", "SUBSTRUCTURE GENERATE"}
+
+
+def is_static_only(path):
+    """The coverage report's population (coverage.py): the deck (its *INCLUDEs expanded) has
+    at least one procedure and every procedure keyword in it is *STATIC."""
+    procedures = {k for k, _, _ in records(path) if k in PROCEDURES}
+    return procedures == {"STATIC"}
 
 
 FILE_REQUESTS = {"NODE FILE", "EL FILE", "CONTACT FILE", "NODE OUTPUT", "ELEMENT OUTPUT",

@@ -27,6 +27,14 @@ class CompareDat(unittest.TestCase):
         self.assertEqual(blocks[1][1][0][0], (1, 1))
         self.assertEqual(blocks[2][1][0], ((), [-1.0, 0.0, 0.0]))
 
+    def test_local_system_mark_is_part_of_the_row_key(self):
+        local = REF.replace("-2.000000E+00\n", "-2.000000E+00 L\n")
+        self.assertEqual(parse_blocks(local)[0][1][0], ((1, "L"), [1.0, 0.0, -2.0]))
+        self.assertEqual(compare(local, local), (0.0, []))
+        worst, problems = compare(REF, local)  # global where ccx printed local: a mismatch
+        self.assertEqual(worst, float("inf"))
+        self.assertTrue(problems)
+
     def test_identical_files_have_zero_error(self):
         self.assertEqual(compare(REF, REF), (0.0, []))
 

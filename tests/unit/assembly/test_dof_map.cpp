@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "assembly/dof_map.hpp"
 #include "test_model_fixture.hpp"
 
@@ -80,4 +82,49 @@ TEST(DofMap, SameStructureComparesConstraintLayoutNotValues) {
   const assembly::DofMap c(m, {{0, 1, 1.0}});
   EXPECT_TRUE(a.same_structure(b));
   EXPECT_FALSE(a.same_structure(c));
+}
+
+TEST(DofMap, TransformedNodeUnknownsAreLocalComponents) {
+  model::Model m = fixtures::brick_row(1);
+  // Node 0: local x' along (1, 1, 0)/sqrt2, y' along (-1, 1, 0)/sqrt2, z' = z.
+  const Real s = 1 / std::sqrt(2.0);
+  Mat3 r;
+  r << s, -s, 0, s, s, 0, 0, 0, 1;
+  m.local_frames[0] = r;
+  // A roller in the rotated plane: local x' of node 0 prescribed to 0.3, y' and z' free.
+  const assembly::DofMap dofs(m, {{0, 0, 0.3}});
+  EXPECT_EQ(dofs.n_prescribed(), 1);
+  EXPECT_EQ(dofs.n_equations(), 24 - 1);
+  EXPECT_FALSE(dofs.is_free(1));  // its global rows mix local unknowns
+  EXPECT_EQ(dofs.describe_unknown(m, 1), "node 1 local dof 2");
+  EXPECT_EQ(dofs.describe_unknown(m, 4), "node 2 dof y");
+  VecX x = VecX::Random(dofs.n_equations());
+  VecX g(1);
+  g << 0.3;
+  const VecX u = dofs.expand(x, g);
+  const Vec3 local = r.transpose() * u.segment<3>(0);
+  EXPECT_NEAR(local[0], 0.3, 1e-15);  // the prescribed local component holds
+  EXPECT_NEAR(dofs.unknown_value(u, 0), 0.3, 1e-15);
+  ASSERT_EQ(dofs.equation_dof(0), 1);  // node 1's local y' is the first unknown
+  EXPECT_NEAR(dofs.unknown_value(u, 1), x[0], 1e-15);
+  EXPECT_NEAR(dofs.unknown_value(u, 4), u[4], 0);  // an untransformed node: itself
+  // Global x and y of node 0 both carry the prescribed value: offsets 0.3 * (s, s, 0).
+  EXPECT_NEAR(dofs.offset(0, g), 0.3 * s, 1e-15);
+  EXPECT_NEAR(dofs.offset(1, g), 0.3 * s, 1e-15);
+  EXPECT_NEAR(dofs.offset(2, g), 0.0, 0);
+}
+
+TEST(DofMap, EquationsOnTransformedNodesAreLocalTiesAreRefused) {
+  model::Model m = fixtures::brick_row(1);
+  Mat3 r;
+  r << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // x' = global y, y' = -global x
+  m.local_frames[1] = r;
+  // u'(node 2, x') = u(node 3, z): node 2's global y follows node 3's z.
+  m.equations.push_back(equation({{1, 0, 1.0}, {2, 2, -1.0}}));
+  const assembly::DofMap dofs(m, {});
+  const VecX x = VecX::Random(dofs.n_equations());
+  const VecX u = dofs.expand(x, VecX());
+  EXPECT_NEAR(u[3 * 1 + 1], u[3 * 2 + 2], 1e-15);
+  m.equations.back().keyword = "*TIE";
+  EXPECT_THROW(assembly::DofMap(m, {}), InputError);
 }

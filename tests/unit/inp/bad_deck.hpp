@@ -20,4 +20,7 @@ std::vector<BadDeck> contact_bad_decks();
 /// The *TIE cases (test_tie.cpp).
 std::vector<BadDeck> tie_bad_decks();
 
+/// The *TRANSFORM cases (test_transform.cpp).
+std::vector<BadDeck> transform_bad_decks();
+
 }  // namespace kontakt::inp::test

@@ -134,6 +134,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedContact, inpErrors,
                          ::testing::ValuesIn(test::contact_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_bad_decks()),
                          case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedTransform, inpErrors,
+                         ::testing::ValuesIn(test::transform_bad_decks()), case_name);
 
 }  // namespace
 }  // namespace kontakt::inp
