@@ -149,34 +149,46 @@ class Client:
                 return
 
 
-class Sweep:
-    """One sweep made by submit_sweep; `doc` is its latest document (status, job counts by
-    status, rows, max_parallel, slurm_array_id)."""
+class _Resource:
+    """A job or sweep of the API with `doc`, its latest document, at `path`."""
 
     def __init__(self, client, doc):
         self.client, self.doc = client, doc
         self.id = doc["id"]
 
     @property
+    def path(self):
+        raise NotImplementedError
+
+    @property
     def status(self):
         return self.doc["status"]
 
     def refresh(self):
-        self.doc = self.client.request("GET", f"/v1/sweeps/id/{self.id}")[2]
+        self.doc = self.client.request("GET", self.path)[2]
         return self.doc
+
+    def cancel(self):
+        """Cancels the job, or every unfinished job of the sweep."""
+        self.doc = self.client.request("POST", f"{self.path}/cancel")[2]
+        return self.doc
+
+
+class Sweep(_Resource):
+    """One sweep made by submit_sweep; `doc` is its latest document (status, job counts by
+    status, rows, max_parallel, slurm_array_id)."""
+
+    @property
+    def path(self):
+        return f"/v1/sweeps/id/{self.id}"
 
     def jobs(self):
         """One summary per row, in row order: row, id, status, labels (the row's parameter
         values), max_displacement, max_mises, ..."""
-        return self.client.request("GET", f"/v1/sweeps/id/{self.id}/jobs")[2]["jobs"]
+        return self.client.request("GET", f"{self.path}/jobs")[2]["jobs"]
 
     def job(self, row):
         return self.client.job(self.jobs()[row]["id"])
-
-    def cancel(self):
-        """Cancels every unfinished job of the sweep."""
-        self.doc = self.client.request("POST", f"/v1/sweeps/id/{self.id}/cancel")[2]
-        return self.doc
 
     def wait(self, timeout=None, poll_interval=0.5):
         """Blocks until every job of the sweep has ended; returns jobs()."""
@@ -188,24 +200,12 @@ class Sweep:
         return self.jobs()
 
 
-class Job:
+class Job(_Resource):
     """One job; `doc` is its latest status document."""
 
-    def __init__(self, client, doc):
-        self.client, self.doc = client, doc
-        self.id = doc["id"]
-
     @property
-    def status(self):
-        return self.doc["status"]
-
-    def refresh(self):
-        self.doc = self.client.request("GET", f"/v1/jobs/{self.id}")[2]
-        return self.doc
-
-    def cancel(self):
-        self.doc = self.client.request("POST", f"/v1/jobs/{self.id}/cancel")[2]
-        return self.doc
+    def path(self):
+        return f"/v1/jobs/{self.id}"
 
     def summary(self):
         return self.client.request("GET", f"/v1/jobs/{self.id}/summary")[2]
