@@ -55,6 +55,15 @@ def squeue_state(sid):
     return out.stdout.strip()
 
 
+def slurm_end_state(sid, timeout=15):
+    """The Slurm job's state once it has left RUNNING: the worker writes its outcome (which
+    ends the job in the store) a moment before the batch script exits."""
+    deadline = time.monotonic() + timeout
+    while (state := squeue_state(sid)) == "RUNNING" and time.monotonic() < deadline:
+        time.sleep(0.1)
+    return state
+
+
 def solver_pid(d, job_id):
     """The solver's process: it works in the job's work folder."""
     suffix = f"/jobs/{job_id}/work"
@@ -98,7 +107,7 @@ class SlurmExecutorTest(unittest.TestCase):
         validate(final, "Job")
         self.assertEqual(final["status"], "succeeded")
         self.assertIsNotNone(final["started"])
-        self.assertIn(squeue_state(slurm_id(d, job["id"])), ("COMPLETING", "COMPLETED"))
+        self.assertIn(slurm_end_state(slurm_id(d, job["id"])), ("COMPLETING", "COMPLETED"))
         status, _, results = d.json("GET", f"/v1/jobs/{job['id']}/results")
         names = [a["name"] for a in results["artifacts"]]
         self.assertIn("deck.hdf", names)
