@@ -637,7 +637,8 @@ Real drift_redo_factor(Real drift) {
 }  // namespace
 
 Acceptance ContactSystem::accept(const VecX& u, bool check_drift) const {
-  if (const MissedContact missed = missed_contact(u); missed.depth > 0) {
+  const std::vector<AabbTree> trees = master_trees(u);
+  if (const MissedContact missed = missed_contact(u, trees); missed.depth > 0) {
     std::ostringstream reason;
     reason << "contact search missed a penetration of " << missed.depth << " at ("
            << missed.where.x() << ", " << missed.where.y() << ", " << missed.where.z()
@@ -646,7 +647,7 @@ Acceptance ContactSystem::accept(const VecX& u, bool check_drift) const {
             .required = true};
   }
   if (!check_drift || criteria() != nonlinear::ContactCriteria::SurfaceToSurface) return {};
-  const Real drift = frozen_drift(u);
+  const Real drift = frozen_drift(u, trees);
   if (drift <= kDriftTolerance) return {};
   return {.accepted = false, .redo_factor = drift_redo_factor(drift),
           .reason = "frozen contact geometry drifted: gaps off by " + std::to_string(drift) +
@@ -679,9 +680,8 @@ Real ContactSystem::max_pressure() const {
   return p;
 }
 
-Real ContactSystem::frozen_drift(const VecX& u) const {
+Real ContactSystem::frozen_drift(const VecX& u, const std::vector<AabbTree>& trees) const {
   Real drift = 0, overclosure = 0, coordinates = 0;
-  const std::vector<AabbTree> trees = master_trees(u);
   for (const Unit& unit : units_) {
     if (!pairs_[unit.pair].scheme.linear) continue;
     bool any = false;
@@ -710,12 +710,12 @@ Real ContactSystem::frozen_drift(const VecX& u) const {
   return overclosure > 0 ? drift / overclosure : 0;
 }
 
-MissedContact ContactSystem::missed_contact(const VecX& u) const {
+MissedContact ContactSystem::missed_contact(const VecX& u,
+                                            const std::vector<AabbTree>& trees) const {
   Real overclosure = 0, coordinates = 0;
   for (const Unit& unit : units_)
     for (const Point& pt : unit.points)
       if (pt.trial.active) overclosure = std::max(overclosure, -pt.trial.gap);
-  const std::vector<AabbTree> trees = master_trees(u);
   MissedContact worst;
   for (const Unit& unit : units_) {
     const FaceGeometry slave = slave_geometry(unit, u);

@@ -176,12 +176,12 @@ class ContactSystem {
   /// Largest difference between a frozen gap and the gap of a fresh projection, over the
   /// active points of the linear variants, relative to their largest overclosure (0 when
   /// nothing is active, or when the difference is round-off of the coordinates).
-  Real frozen_drift(const VecX& u) const;
+  Real frozen_drift(const VecX& u) const { return frozen_drift(u, master_trees(u)); }
 
   /// A fresh search at `u` over every master face: the deepest penetration of an inactive point
   /// into a face that was not among its candidates at begin_increment, beyond a tenth of the
   /// largest overclosure of the active points (the drift check's tolerance) and round-off.
-  MissedContact missed_contact(const VecX& u) const;
+  MissedContact missed_contact(const VecX& u) const { return missed_contact(u, master_trees(u)); }
 
  private:
   /// Where a point is paired: fixed at begin_increment, except for the re-pairing of the
@@ -239,6 +239,9 @@ class ContactSystem {
   FaceGeometry slave_geometry(const Unit& unit, const VecX& u) const;
   /// The broad phase: one tree over each pair's master faces at `u`.
   std::vector<AabbTree> master_trees(const VecX& u) const;
+  // accept() builds the trees once for both checks.
+  Real frozen_drift(const VecX& u, const std::vector<AabbTree>& trees) const;
+  MissedContact missed_contact(const VecX& u, const std::vector<AabbTree>& trees) const;
   /// Where a unit looks for master faces: its slave face's (node's) box, its size (the largest
   /// of the node's faces) and the slave face's normal (zero for a node).
   struct SearchRegion {
