@@ -149,19 +149,21 @@ def main():
 
     cases = [(case, names[case], write_case(case, names[case])) for case in args.cases]
     print(f"threads: {args.threads} for both; kontakt scheme: {args.scheme or 'default'}")
-    print(f"{'case':18s} {'solver':8s} {'status':14s} {'wall s':>8s} {'peak MiB':>9s} "
+    print(f"{'case':18s} {'solver':8s} {'status':14s} {'wall s':>8s} {'cpu s':>8s} {'peak MiB':>9s} "
           f"{'increments':>10s} {'iterations':>10s}")
     ok = True
     for case, name, deck in cases:
         ccx, ours, agreement = bench_case(name, deck, args)
         for label, run in (("ccx", ccx), ("kontakt", ours)):
-            print(f"{name:18s} {label:8s} {run.status:14s} {run.wall:8.2f} {run.peak_mib:9.0f} "
+            print(f"{name:18s} {label:8s} {run.status:14s} {run.wall:8.2f} {run.cpu:8.2f} "
+                  f"{run.peak_mib:9.0f} "
                   f"{run.increments:10d} {run.iterations:10d}")
         if agreement is None:
             print(f"{name:18s} not compared: a solver did not converge")
             ok = False
             continue
-        print(f"{name:18s} ratios kontakt/ccx: wall {ours.wall / ccx.wall:.3f}, memory "
+        print(f"{name:18s} ratios kontakt/ccx: wall {ours.wall / ccx.wall:.3f}, cpu "
+              f"{ours.cpu / max(ccx.cpu, 1e-9):.3f}, memory "
               f"{ours.peak_mib / ccx.peak_mib:.3f}, iterations "
               f"{ours.iterations / max(ccx.iterations, 1):.3f}; final displacements differ by "
               f"{agreement:.2e}")

@@ -39,6 +39,7 @@ class Run:
     peak_mib: float
     result_dir: str      # folder holding NAME.dat / .sta (and .frd or .hdf)
     message: str = ""    # when not converged: the solver's first error line (or its last line)
+    cpu: float = 0.0     # user + system seconds of the child: less sensitive to a loaded machine
 
 
 def contact_type_for(scheme):
@@ -52,7 +53,8 @@ def deck_suffix(contact_type):
 
 
 def timed_run(cmd, cwd, log_path, timeout, env=None):
-    """(wall seconds, peak RSS MiB, return code or None on timeout) of one child process."""
+    """(wall seconds, peak RSS MiB, return code or None on timeout, CPU seconds) of one child
+    process."""
     start = time.perf_counter()
     with open(log_path, "w") as log:
         proc = subprocess.Popen(["nice", "-n", str(NICENESS)] + cmd, cwd=cwd, env=env,
@@ -68,7 +70,8 @@ def timed_run(cmd, cwd, log_path, timeout, env=None):
         timer.cancel()
         proc.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - start
-    return wall, usage.ru_maxrss / 1024.0, None if expired.is_set() else proc.returncode
+    return (wall, usage.ru_maxrss / 1024.0, None if expired.is_set() else proc.returncode,
+            usage.ru_utime + usage.ru_stime)
 
 
 def _message(log_path):
@@ -88,7 +91,7 @@ def run_ccx(deck_path, timeout=DEFAULT_TIMEOUT, threads=1):
     name = name[:-4]
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), CCX_NPROC_EQUATION_SOLVER=str(threads))
     log = os.path.join(folder, name + ".ccx.log")
-    wall, peak, rc = timed_run(["ccx", "-i", name], folder, log, timeout, env)
+    wall, peak, rc, cpu = timed_run(["ccx", "-i", name], folder, log, timeout, env)
     with open(log, errors="replace") as f:
         finished = "Job finished" in f.read()
     converged = rc == 0 and finished
@@ -96,7 +99,7 @@ def run_ccx(deck_path, timeout=DEFAULT_TIMEOUT, threads=1):
               else "not converged" if rc == 0 or not finished else f"exit {rc}")
     increments, iterations = _counts(os.path.join(folder, name + ".sta"))
     return Run(converged, status, iterations, increments, wall, peak, folder,
-               "" if converged else _message(log))
+               "" if converged else _message(log), cpu)
 
 
 def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, threads=1,
@@ -112,11 +115,11 @@ def run_kontakt(exe, deck_path, scheme, out_dir, timeout=DEFAULT_TIMEOUT, thread
     cmd += list(extra_args)
     env = dict(os.environ, OPENBLAS_NUM_THREADS=str(threads))
     log = os.path.join(out_dir, name + ".kontakt.log")
-    wall, peak, rc = timed_run(cmd, out_dir, log, timeout, env)
+    wall, peak, rc, cpu = timed_run(cmd, out_dir, log, timeout, env)
     status = {None: "timeout", 0: "converged", 3: "not converged"}.get(rc, f"exit {rc}")
     increments, iterations = _counts(os.path.join(out_dir, name + ".sta"))
     return Run(rc == 0, status, iterations, increments, wall, peak, out_dir,
-               "" if rc == 0 else _message(log))
+               "" if rc == 0 else _message(log), cpu)
 
 
 def write_deck(model, folder, contact_type, name="model"):
