@@ -138,20 +138,26 @@ class NonlinearStatic {
   }
 
   /// External forces at step time t on the configuration u: loads without amplitude ramp from
-  /// the previous step's end values to this step's; pressures follow the deformed faces under
-  /// NLGEOM (their load stiffness is left out of the tangent, which keeps it symmetric at the
-  /// price of slower convergence under large pressure-driven rotations).
+  /// the previous step's end values to this step's; under NLGEOM pressures follow the deformed
+  /// faces and centrifugal forces the moving mass (their load stiffness is left out of the
+  /// tangent, which keeps it symmetric at the price of slower convergence under large
+  /// pressure-driven rotations; a spinning disk converged in ccx's iterations without it).
   VecX loads_at(const StepContext& sc, Real t, const VecX& u) const {
     const model::Step& step = *sc.step;
     const Real ramp = t / sc.period, total = total_time_start_ + t;
     const MatX3 x = step.nlgeom ? MatX3(model_.mesh.coords +
                                         Eigen::Map<const MatX3>(u.data(), model_.n_nodes(), 3))
                                 : model_.mesh.coords;
+    const VecX u_body = step.nlgeom ? u : VecX::Zero(u.size());  // the mass moves with NLGEOM
     VecX f = cloads_prev_ * (1 - ramp) + concentrated_forces(model_, step, t, total, ramp) +
-             pressure_forces(model_, step, t, total, ramp, x);
-    if (sc.previous)  // the previous step's pressures fade out as this step's take over
-      f += pressure_forces(model_, *sc.previous, sc.previous->procedure.period, total_time_start_,
-                           1 - ramp, x);
+             pressure_forces(model_, step, t, total, ramp, x) +
+             body_forces(model_, step, t, total, ramp, u_body);
+    if (sc.previous) {  // the previous step's distributed loads fade out as this step's take over
+      const model::Step& previous = *sc.previous;
+      const Real end = previous.procedure.period;
+      f += pressure_forces(model_, previous, end, total_time_start_, 1 - ramp, x) +
+           body_forces(model_, previous, end, total_time_start_, 1 - ramp, u_body);
+    }
     return f;
   }
 

@@ -52,10 +52,41 @@ VecX pressure_forces(const model::Model& model, const model::Step& step, Real st
   return f;
 }
 
+element::BodyAcceleration body_acceleration(const model::Model& model, const model::BodyLoad& load,
+                                            Real step_time, Real total_time, Real ramp) {
+  const bool gravity = load.kind == model::BodyLoad::Kind::Gravity;
+  return {.kind = gravity ? element::BodyAcceleration::Kind::Gravity
+                          : element::BodyAcceleration::Kind::Centrifugal,
+          .magnitude = load.value * load_factor(model, load.amplitude, step_time, total_time, ramp),
+          .point = load.point,
+          .direction = load.direction};
+}
+
+VecX body_forces(const model::Model& model, const model::Step& step, Real step_time,
+                 Real total_time, Real ramp, const VecX& u) {
+  VecX f = VecX::Zero(3 * model.n_nodes());
+  for (const auto& load : step.body_loads) {
+    const element::BodyAcceleration b =
+        body_acceleration(model, load, step_time, total_time, ramp);
+    for (int e : load.elements) {
+      const auto& el = model.mesh.elements[static_cast<std::size_t>(e)];
+      VecX fe;
+      naming_element(el, [&] {
+        element::body_load(el.type, element_coords(model, el), element_displacements(el, u),
+                           *element_material_def(model, el).density, b, fe);
+      });
+      for (std::size_t a = 0; a < el.nodes.size(); ++a)
+        f.segment<3>(3 * el.nodes[a]) += fe.segment<3>(3 * static_cast<Index>(a));
+    }
+  }
+  return f;
+}
+
 VecX external_forces(const model::Model& model, const model::Step& step, Real step_time,
                      Real total_time, Real ramp) {
   return concentrated_forces(model, step, step_time, total_time, ramp) +
-         pressure_forces(model, step, step_time, total_time, ramp, model.mesh.coords);
+         pressure_forces(model, step, step_time, total_time, ramp, model.mesh.coords) +
+         body_forces(model, step, step_time, total_time, ramp, VecX::Zero(3 * model.n_nodes()));
 }
 
 VecX prescribed_values(const model::Model& model, const model::Step& step,

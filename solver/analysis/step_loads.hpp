@@ -4,6 +4,7 @@
 #pragma once
 
 #include "assembly/dof_map.hpp"
+#include "element/body_load.hpp"
 #include "model/model.hpp"
 
 namespace kontakt::analysis {
@@ -25,6 +26,15 @@ VecX concentrated_forces(const model::Model& model, const model::Step& step, Rea
 /// pressure under NLGEOM.
 VecX pressure_forces(const model::Model& model, const model::Step& step, Real step_time,
                      Real total_time, Real ramp, const MatX3& x);
+
+/// The *DLOAD GRAV and CENTRIF part of external_forces with the nodes displaced by `u`
+/// (3 * n_nodes): zero for small strain; under NLGEOM the centrifugal force follows the mass.
+VecX body_forces(const model::Model& model, const model::Step& step, Real step_time,
+                 Real total_time, Real ramp, const VecX& u);
+
+/// The acceleration field of a body load scaled by its load factor at a time.
+element::BodyAcceleration body_acceleration(const model::Model& model, const model::BodyLoad& load,
+                                            Real step_time, Real total_time, Real ramp);
 
 /// Values of the prescribed dofs at a time: amplitude-driven ones evaluated there, the others
 /// `start + ramp * (value - start)` with start = `u_start` at that dof; FIXED ones hold

@@ -3,10 +3,12 @@
 // because ccx lets them mention labels defined further down.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -66,12 +68,16 @@ using PrintEntry = std::variant<model::PrintRequest, model::ContactRequest>;
 
 using DofKey = std::pair<int, int>;  ///< (internal node, dof 0..2)
 using FaceKey = std::pair<int, int>; ///< (internal element, 1-based face)
+/// A body load of the same element set (as written), kind and, for gravity, direction as an
+/// earlier one is the same load to ccx: it adds within a step and replaces across steps.
+using BodyLoadKey = std::tuple<std::string, model::BodyLoad::Kind, std::array<Real, 3>>;
 
 /// Loads and constraints in force, carried from step to step (ccx OP=MOD semantics).
 struct ActiveLoads {
   std::map<DofKey, model::Boundary> boundaries;
   std::map<DofKey, model::ConcentratedLoad> cloads;
   std::map<FaceKey, model::PressureLoad> pressures;
+  std::map<BodyLoadKey, model::BodyLoad> body_loads;
   std::map<int, Real> temperatures;  ///< internal node -> temperature
   /// In ccx's order: the first card of a kind in a step removes the earlier entries of that
   /// kind, new requests are appended (so the .dat blocks follow this list).
@@ -97,6 +103,7 @@ struct StepProgress {
   std::set<std::string> seen;               ///< record keys seen in this step
   std::set<DofKey> cloads_in_step;          ///< repeated CLOADs in one step add up
   std::set<FaceKey> pressures_in_step;      ///< likewise for DLOADs
+  std::set<BodyLoadKey> body_loads_in_step; ///< and for GRAV / CENTRIF
 };
 
 struct DeckState {

@@ -79,7 +79,10 @@ std::vector<FaceKey> pressure_faces(const Record& record, const DataLine& line,
   const std::optional<int> face = label.starts_with("P") && label.size() == 2
                                       ? parse_int(label.substr(1))
                                       : std::nullopt;
-  if (!face) fail(record, line, "load type " + label + " is not supported (only P1..P6)");
+  if (!face) {
+    fail(record, line, "load type " + label +
+                           " is not supported (only P1..P6, P, GRAV and CENTRIF)");
+  }
   for (int element : resolve_element_field(state, record, line, 0)) {
     faces.emplace_back(element, *face);
   }
@@ -94,6 +97,56 @@ void check_face_exists(const Record& record, const DataLine& line, const DeckSta
     fail(record, line, "element " + std::to_string(element.id) + " (" + std::string(name.name) +
                            ") has no face " + std::to_string(face.second));
   }
+}
+
+bool is_body_load(const DataLine& line) {
+  const std::string label = to_upper(line.fields[1]);
+  return label == "GRAV" || label == "CENTRIF";
+}
+
+/// A unit vector from fields first..first+2; a non-unit one is normalised as ccx does, with a
+/// warning, since a deck giving g as a vector with magnitude 1 would otherwise get |g| times it.
+Vec3 unit_vector_field(const Record& record, const DataLine& line, std::size_t first,
+                       DeckState& state, const std::string& what) {
+  const Vec3 v(real_field(record, line, first), real_field(record, line, first + 1),
+               real_field(record, line, first + 2));
+  if (v.norm() == 0) fail(record, line, what + " is the zero vector");
+  if (std::abs(v.norm() - 1) > 1e-6) {
+    state.warn(line.where, record.keyword,
+               what + " has length " + std::to_string(v.norm()) + "; normalised (as ccx does)");
+  }
+  return v.normalized();
+}
+
+/// "elset, GRAV, g, dx, dy, dz" or "elset, CENTRIF, omega^2, point, axis".
+void read_body_load_line(const Record& record, const DataLine& line, DeckState& state,
+                         int amplitude) {
+  model::BodyLoad load;
+  load.where = line.where;
+  load.amplitude = amplitude;
+  if (to_upper(line.fields[1]) == "GRAV") {
+    require_field_count(record, line, 6, 6);
+    load.kind = model::BodyLoad::Kind::Gravity;
+    load.direction = unit_vector_field(record, line, 3, state, "the gravity direction");
+  } else {
+    require_field_count(record, line, 9, 9);
+    load.kind = model::BodyLoad::Kind::Centrifugal;
+    load.point = Vec3(real_field(record, line, 3), real_field(record, line, 4),
+                      real_field(record, line, 5));
+    load.direction = unit_vector_field(record, line, 6, state, "the rotation axis");
+    if (real_field(record, line, 2) < 0)
+      fail(record, line, "CENTRIF magnitude is omega^2 and cannot be negative");
+  }
+  load.value = real_field(record, line, 2);
+  load.elements = resolve_element_field(state, record, line, 0);
+  const bool gravity = load.kind == model::BodyLoad::Kind::Gravity;
+  const BodyLoadKey key{
+      remove_blanks(to_upper(line.fields[0])), load.kind,
+      gravity ? std::array<Real, 3>{load.direction.x(), load.direction.y(), load.direction.z()}
+              : std::array<Real, 3>{}};
+  model::BodyLoad& active = state.active.body_loads[key];
+  if (!state.open_step->body_loads_in_step.insert(key).second) load.value += active.value;
+  active = std::move(load);
 }
 
 }  // namespace
@@ -132,11 +185,18 @@ void handle_cload(const Record& record, DeckState& state) {
 
 void handle_dload(const Record& record, DeckState& state) {
   check_params(record, {"OP", "AMPLITUDE"});
-  if (op_new_requested(record, state)) state.active.pressures.clear();
+  if (op_new_requested(record, state)) {
+    state.active.pressures.clear();
+    state.active.body_loads.clear();
+  }
   const int amplitude = amplitude_param(state, record);
   StepProgress& progress = *state.open_step;
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 2, 1000);
+    if (is_body_load(line)) {
+      read_body_load_line(record, line, state, amplitude);
+      continue;
+    }
     const std::vector<FaceKey> faces = pressure_faces(record, line, state);  // checks the type
     require_field_count(record, line, 3, 3);
     const Real value = real_field(record, line, 2);

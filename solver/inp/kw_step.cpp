@@ -109,6 +109,7 @@ void handle_end_step(const Record& record, DeckState& state) {
   step.boundaries = values_of(active.boundaries);
   step.cloads = values_of(active.cloads);
   step.pressures = values_of(active.pressures);
+  step.body_loads = values_of(active.body_loads);
   step.temperatures = step_temperatures(state);
   set_step_prints(active, step);
   step.node_files = with_frequency(active.node_files, active.output_frequency);
@@ -134,6 +135,7 @@ void handle_end_step(const Record& record, DeckState& state) {
   freeze(active.boundaries);
   freeze(active.cloads);
   freeze(active.pressures);
+  freeze(active.body_loads);
   state.model.steps.push_back(std::move(step));
   state.open_step.reset();
 }

@@ -234,6 +234,24 @@ void require_sections(const DeckState& state) {
   }
 }
 
+/// GRAV and CENTRIF act on the mass: every loaded element's material needs a *DENSITY.
+void require_densities(const DeckState& state) {
+  const model::Model& model = state.model;
+  for (const model::Step& step : model.steps) {
+    for (const model::BodyLoad& load : step.body_loads) {
+      for (int e : load.elements) {
+        const model::Element& element = model.mesh.elements[static_cast<std::size_t>(e)];
+        const model::Material& material =
+            model.materials[static_cast<std::size_t>(model.sections[element.section].material)];
+        if (material.density) continue;
+        throw InputError(load.where, "*DLOAD",
+                         "element " + std::to_string(element.id) + " has material " +
+                             material.name + " without *DENSITY; GRAV and CENTRIF need it");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 model::Model finish_model(DeckState& state) {
@@ -252,6 +270,7 @@ model::Model finish_model(DeckState& state) {
   }
   assign_sections(state);
   require_sections(state);
+  require_densities(state);
   resolve_contact(state);
   resolve_ties(state);
   if (!state.initial_temperatures.empty()) {

@@ -132,6 +132,18 @@ struct PressureLoad {
   int amplitude = -1;
 };
 
+/// *DLOAD GRAV or CENTRIF on a set of elements: an acceleration field acting on their mass.
+struct BodyLoad {
+  enum class Kind { Gravity, Centrifugal };
+  Kind kind = Kind::Gravity;
+  std::vector<int> elements;      ///< internal indices
+  Real value = 0;                 ///< GRAV: the acceleration; CENTRIF: omega^2
+  Vec3 point = Vec3::Zero();      ///< CENTRIF: a point on the axis
+  Vec3 direction = Vec3::UnitZ(); ///< unit: GRAV the acceleration's direction, CENTRIF the axis
+  int amplitude = -1;
+  SourceLoc where;
+};
+
 enum class Totals { No, Yes, Only };
 
 /// *NODE PRINT / *EL PRINT request (printed to .dat).
@@ -172,6 +184,7 @@ struct Step {
   std::vector<Boundary> boundaries;
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> pressures;
+  std::vector<BodyLoad> body_loads;
   /// Nodal temperatures at the end of the step (*TEMPERATURE), size n_nodes, or empty when
   /// the step has no temperature field (then the initial temperatures apply).
   VecX temperatures;

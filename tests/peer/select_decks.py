@@ -15,7 +15,7 @@ the FIRST check a deck breaks is its exclusion reason:
       - *SOLID SECTION: no ORIENTATION=;
       - *INITIAL CONDITIONS: TYPE=TEMPERATURE only;
       - *BOUNDARY: first and last dof within 1-3; *CLOAD: dof within 1-3;
-      - *DLOAD: load label P1-P6 only (face pressures);
+      - *DLOAD: load label P1-P6 (face pressures), GRAV or CENTRIF (body loads) only;
       - *STEP: no NLGEOM (unless NLGEOM=NO), no PERTURBATION;
       - *NODE PRINT: variables from NODE_PRINT_VARIABLES (U, RF) only;
         *EL PRINT: variables from EL_PRINT_VARIABLES (S, E, EVOL, ENER, ELSE, PEEQ) only
@@ -331,7 +331,7 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
         elif keyword == "DLOAD":
             for line in data:
                 fields = [f.strip().upper() for f in line.split(",")]
-                if len(fields) < 2 or not re.fullmatch(r"P[1-6]", fields[1]):
+                if len(fields) < 2 or not re.fullmatch(r"P[1-6]|GRAV|CENTRIF", fields[1]):
                     label = fields[1] if len(fields) > 1 else "?"
                     return f"*DLOAD {re.sub(r'[0-9]+$', 'n', label)} (not Pn)"
         elif keyword == "STEP":

@@ -59,7 +59,7 @@ class SelectDecks(unittest.TestCase):
             ("MATERIAL=M\n", "MATERIAL=M, ORIENTATION=OR\n"): "*SOLID SECTION, ORIENTATION",
             ("NALL, 1, 3", "NALL, 1, 6"): "*BOUNDARY dof outside 1-3",
             ("1, 3, 1.", "1, 5, 1."): "*CLOAD dof outside 1-3",
-            ("EALL, P2, 1.", "EALL, GRAV, 9.81, 0, 0, -1"): "*DLOAD GRAV (not Pn)",
+            ("EALL, P2, 1.", "EALL, NEWTON"): "*DLOAD NEWTON (not Pn)",
             ("*STEP\n", "*STEP, NLGEOM\n"): "*STEP, NLGEOM",
             ("*STEP\n", "*STEP, PERTURBATION\n"): "*STEP, PERTURBATION",
             ("U, RF", "U, NT"): "*NODE PRINT of NT",

@@ -89,7 +89,8 @@ bool supported_card(const std::string& keyword, const std::string& card) {
   return true;
 }
 
-/// Data lines the reader rejects on purpose: temperature tables, non-pressure DLOADs.
+/// Data lines the reader rejects on purpose: temperature tables, DLOADs other than pressures and
+/// GRAV/CENTRIF.
 bool supported_data(const std::string& keyword, const std::string& data, int& lines_in_card) {
   ++lines_in_card;
   if ((keyword == "ELASTIC" || keyword == "DENSITY" || keyword == "EXPANSION") &&
@@ -99,8 +100,8 @@ bool supported_data(const std::string& keyword, const std::string& data, int& li
   if (keyword == "DLOAD") {
     const auto comma = data.find(',');
     const std::string label = data.substr(comma + 1, data.find(',', comma + 1) - comma - 1);
-    return label == "P" || (label.size() == 2 && label[0] == 'P' && label[1] >= '1' &&
-                            label[1] <= '6');
+    return label == "P" || label == "GRAV" || label == "CENTRIF" ||
+           (label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '6');
   }
   return true;
 }

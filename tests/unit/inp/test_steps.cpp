@@ -119,6 +119,47 @@ TEST(inpSteps, DloadFacesAddWithinStepAndOpNew) {
   EXPECT_DOUBLE_EQ(p1[0].value, 3.0);
 }
 
+TEST(inpSteps, BodyLoadsAddWithinStepAndReplaceAcrossSteps) {
+  std::string deck = test::two_cubes_model();
+  deck.insert(deck.find("*SOLID SECTION"), "*DENSITY\n7.8e-9\n");
+  deck += "*ELSET, ELSET=RIGHT\n2\n"
+          "*STEP\n*STATIC\n*DLOAD\nEALL, GRAV, 9810., 0., 0., -1.\n"
+          "RIGHT, GRAV, 100., 0., 3., 4.\nEALL, GRAV, 5000., 0., 0., -1.\n"
+          "Eall, CENTRIF, 1e4, 1., 2., 3., 0., 0., 2.\n*END STEP\n"
+          "*STEP\n*STATIC\n*DLOAD, OP=NEW\nRIGHT, CENTRIF, 4e4, 0., 0., 0., 1., 0., 0.\n"
+          "*END STEP\n"
+          "*STEP\n*STATIC\n*DLOAD\nRIGHT, CENTRIF, 3e4, 0., 0., 0., 1., 0., 0.\n*END STEP\n";
+  const Model m = read_deck_text(deck);
+  using Kind = model::BodyLoad::Kind;
+  const auto& b0 = m.steps[0].body_loads;
+  ASSERT_EQ(b0.size(), 3u);  // EALL's two gravity cards along -z are one load of 14810
+  const auto find = [&b0](Kind kind, Real value) {
+    const auto it = std::find_if(b0.begin(), b0.end(), [&](const model::BodyLoad& b) {
+      return b.kind == kind && b.value == value;
+    });
+    return it == b0.end() ? nullptr : &*it;
+  };
+  const model::BodyLoad* all = find(Kind::Gravity, 14810.);
+  const model::BodyLoad* right = find(Kind::Gravity, 100.);
+  const model::BodyLoad* spin = find(Kind::Centrifugal, 1e4);
+  ASSERT_TRUE(all && right && spin);
+  EXPECT_EQ(all->elements, (std::vector<int>{0, 1}));
+  EXPECT_LT((right->direction - Vec3(0, 0.6, 0.8)).norm(), 1e-15);
+  EXPECT_EQ(right->elements, (std::vector<int>{1}));
+  EXPECT_EQ(spin->point, Vec3(1, 2, 3));
+  EXPECT_EQ(spin->direction, Vec3(Vec3::UnitZ()));
+  // Non-unit directions are normalised with a warning each (RIGHT's gravity and the axis).
+  EXPECT_EQ(std::count_if(m.warnings.begin(), m.warnings.end(),
+                          [](const std::string& w) { return w.find("normalised") != w.npos; }),
+            2);
+  const auto& b1 = m.steps[1].body_loads;  // OP=NEW removed step 1's
+  ASSERT_EQ(b1.size(), 1u);
+  EXPECT_EQ(b1[0].kind, Kind::Centrifugal);
+  EXPECT_DOUBLE_EQ(b1[0].value, 4e4);
+  ASSERT_EQ(m.steps[2].body_loads.size(), 1u);  // the same load in a later step: replaced
+  EXPECT_DOUBLE_EQ(m.steps[2].body_loads[0].value, 3e4);
+}
+
 TEST(inpSteps, TemperaturesAndInitialConditions) {
   std::string deck = test::two_cubes_model();
   deck += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 20.\n1, 15.\n"
