@@ -170,6 +170,8 @@ def main():
                    help=f"drag increments (default {cattaneo.INCREMENTS} / "
                         f"{cattaneo.SPHERE_INCREMENTS})")
     p.add_argument("--work", default="contact_cattaneo_work")
+    p.add_argument("--timeout", type=int, default=1200,
+                   help="seconds per kontakt run (the sphere at a/h 10 needs about an hour)")
     args = p.parse_args()
     if not args.kontakt:
         p.error("--kontakt is required (the check reads kontakt's contact point table)")
@@ -185,7 +187,7 @@ def main():
     decks = {t: solvers.write_deck(model, folder, t, "cattaneo") for t in solvers.CCX_TYPES}
     passed = failed = 0
     for scheme in args.schemes:
-        run = solvers.solve(decks, folder, scheme, args.kontakt, timeout=1200)
+        run = solvers.solve(decks, folder, scheme, args.kontakt, timeout=args.timeout)
         print(f"kontakt {scheme}, {args.model}, {mesh}: {run.status}, {run.increments} increments, "
               f"{run.iterations} iterations, {run.wall:.1f} s")
         if not run.converged:
