@@ -152,7 +152,7 @@ void read_body_load_line(const Record& record, const DataLine& line, DeckState& 
 }  // namespace
 
 void handle_boundary(const Record& record, DeckState& state) {
-  check_params(record, {"OP", "AMPLITUDE", "FIXED"});
+  check_params(record, {"OP", "AMPLITUDE", "TIMEDELAY", "FIXED"});
   const bool hold_previous = has_param(record, "FIXED");
   if (hold_previous && !state.open_step)
     fail(record, "FIXED is only allowed inside a step (it refers to the previous step's result)");
@@ -164,7 +164,7 @@ void handle_boundary(const Record& record, DeckState& state) {
 }
 
 void handle_cload(const Record& record, DeckState& state) {
-  check_params(record, {"OP", "AMPLITUDE"});
+  check_params(record, {"OP", "AMPLITUDE", "TIMEDELAY"});
   if (op_new_requested(record, state)) state.active.cloads.clear();
   const int amplitude = amplitude_param(state, record);
   StepProgress& progress = *state.open_step;
@@ -184,7 +184,7 @@ void handle_cload(const Record& record, DeckState& state) {
 }
 
 void handle_dload(const Record& record, DeckState& state) {
-  check_params(record, {"OP", "AMPLITUDE"});
+  check_params(record, {"OP", "AMPLITUDE", "TIMEDELAY"});
   if (op_new_requested(record, state)) {
     state.active.pressures.clear();
     state.active.body_loads.clear();

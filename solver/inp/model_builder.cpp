@@ -124,12 +124,24 @@ std::vector<int> resolve_element_field(const DeckState& state, const Record& rec
   return element_set_members(state, set->second, name);
 }
 
-int amplitude_param(const DeckState& state, const Record& record) {
+int amplitude_param(DeckState& state, const Record& record) {
   const std::optional<std::string> name = name_value(record, "AMPLITUDE");
-  if (!name) return -1;
+  const std::optional<std::string> delay_text = name_value(record, "TIMEDELAY");
+  if (!name) {
+    if (delay_text) fail(record, "TIME DELAY shifts an amplitude: AMPLITUDE= is missing");
+    return -1;
+  }
   const auto found = state.amplitude_index.find(*name);
   if (found == state.amplitude_index.end()) fail(record, "amplitude " + *name + " is not defined");
-  return found->second;
+  if (!delay_text) return found->second;
+  const std::optional<Real> delay = parse_real(*delay_text);
+  if (!delay) fail(record, "TIME DELAY=" + *delay_text + " is not a number");
+  // As ccx: the card gets its own copy of the amplitude, moved later in time by the delay.
+  model::Amplitude shifted = state.model.amplitudes[static_cast<std::size_t>(found->second)];
+  shifted.name += " (TIME DELAY=" + *delay_text + ")";
+  for (auto& point : shifted.points) point.first += *delay;
+  state.model.amplitudes.push_back(std::move(shifted));
+  return static_cast<int>(state.model.amplitudes.size()) - 1;
 }
 
 namespace {

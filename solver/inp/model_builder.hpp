@@ -35,8 +35,9 @@ std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
                                      const std::string& name);
 
-/// Amplitude index for an AMPLITUDE= parameter, -1 when absent.
-int amplitude_param(const DeckState& state, const Record& record);
+/// Amplitude index for an AMPLITUDE= parameter, -1 when absent; with TIME DELAY= the index of a
+/// copy of the amplitude moved later in time by the delay.
+int amplitude_param(DeckState& state, const Record& record);
 
 /// Checks cross references and produces the Model.
 model::Model finish_model(DeckState& state);

@@ -10,7 +10,7 @@ the FIRST check a deck breaks is its exclusion reason:
   (a) every *ELEMENT has TYPE= one of ELEMENT_TYPES
       (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
-      - no parameter in FORBIDDEN_PARAMETERS (TIME DELAY, USER) on any keyword;
+      - no parameter in FORBIDDEN_PARAMETERS (USER) on any keyword;
       - *ELASTIC and *EXPANSION: TYPE= absent or ISO, exactly one data line (no table);
       - *SOLID SECTION: no ORIENTATION=;
       - *INITIAL CONDITIONS: TYPE=TEMPERATURE only;
@@ -80,7 +80,7 @@ SUPPORTED_KEYWORDS = {
     "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT", "CONTROLS",
     "TRANSFORM",
 }
-FORBIDDEN_PARAMETERS = {"TIME DELAY", "TIMEDELAY", "USER"}
+FORBIDDEN_PARAMETERS = {"USER"}
 CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
                     "CONTACT FILE", "CONTACT OUTPUT", "FRICTION", "CHANGE FRICTION",
                     "CHANGE SURFACE BEHAVIOR"}

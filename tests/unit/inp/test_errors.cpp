@@ -88,6 +88,13 @@ std::vector<BadDeck> bad_decks() {
        "no face 7"},
       {"undefined amplitude", model_plus(step + "*CLOAD, AMPLITUDE=A1\n1, 1, 1.\n*END STEP\n"),
        29, "*CLOAD", "amplitude A1 is not defined"},
+      {"time delay without amplitude",
+       model_plus(step + "*CLOAD, TIME DELAY=1.\n1, 1, 1.\n*END STEP\n"), 29, "*CLOAD",
+       "AMPLITUDE= is missing"},
+      {"time delay not a number",
+       model_plus("*AMPLITUDE, NAME=A\n0., 0., 1., 1.\n" + step +
+                  "*CLOAD, AMPLITUDE=A, TIME DELAY=soon\n1, 1, 1.\n*END STEP\n"),
+       31, "*CLOAD", "TIME DELAY=SOON is not a number"},
       {"odd amplitude data", model_plus("*AMPLITUDE, NAME=A\n0., 0., 1.\n"), 28, "*AMPLITUDE",
        "pairs"},
       {"equation with node set", model_plus("*EQUATION\n2\nTIP, 1, 1., 1, 1, -1.\n"), 29,

@@ -208,6 +208,23 @@ TEST(inpSteps, AmplitudesAndFreezingAtStepEnd) {
   EXPECT_DOUBLE_EQ(s1.boundaries[0].value, 0.2);
 }
 
+TEST(inpSteps, TimeDelayShiftsACopyOfTheAmplitude) {
+  std::string deck = test::two_cubes_model();
+  deck += "*AMPLITUDE, NAME=A1\n0., 1., 1., 2., 2., 3.\n"
+          "*STEP\n*STATIC\n0.5, 1.5\n*CLOAD, AMPLITUDE=A1, TIME DELAY=1.\n9, 2, 1.\n"
+          "*CLOAD, AMPLITUDE=A1\n10, 2, 1.\n*END STEP\n";
+  const Model m = read_deck_text(deck);
+  ASSERT_EQ(m.amplitudes.size(), 2u);
+  const auto& cloads = m.steps[0].cloads;
+  ASSERT_EQ(cloads.size(), 2u);
+  EXPECT_EQ(cloads[1].amplitude, 0);  // the undelayed card keeps the amplitude itself
+  const model::Amplitude& delayed = m.amplitudes[static_cast<std::size_t>(cloads[0].amplitude)];
+  EXPECT_NE(cloads[0].amplitude, 0);
+  for (Real t : {0.0, 0.5, 1.2, 1.5, 2.7})  // amplitude at t is A1 at t - 1
+    EXPECT_DOUBLE_EQ(delayed.value_at(t), m.amplitudes[0].value_at(t - 1)) << "t = " << t;
+  EXPECT_DOUBLE_EQ(delayed.value_at(1.5), 1.5);
+}
+
 TEST(inpSteps, EquationsWithContinuation) {
   std::string deck = test::two_cubes_model();
   deck += "*EQUATION\n2\n9, 1, 1., 2, 1, -1.\n5\n10, 2, 1., 11, 2, -0.25, 12, 2, -0.25, "
