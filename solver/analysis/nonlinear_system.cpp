@@ -50,7 +50,7 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   } else {
     element::IpResults r;
     element::recover(el.type, X, mat, ue, dTe, r);
-    if (K) element::linear_stiffness(el.type, X, mat, *K);
+    if (K) element::linear_stiffness(el.type, X, mat, dTe, *K);
     f_int = std::move(r.internal_force);
     trial = committed;
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};

@@ -27,7 +27,7 @@ struct PlasticResult {
 /// C3D8I: the mode amplitudes its local solve starts from, empty for zero). C3D8R adds its
 /// elastic hourglass stiffness; C3D8I condenses its incompatible modes by a local Newton
 /// iteration (SolverError if it fails).
-void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
+void plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
                      const material::HardeningTable& hardening, const MatX3& u, const VecX& dT,
                      const ElementState& committed, bool want_tangent, PlasticResult& out);
 

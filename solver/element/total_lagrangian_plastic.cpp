@@ -30,7 +30,7 @@ Vec6 hourglass_modulus_gradient(const LinearElastic& mat, const material::Harden
 
 }  // namespace
 
-void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
+void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
                             const material::HardeningTable& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out, PlasticTangent tangent_choice) {
@@ -45,8 +45,9 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElasti
     out.state.work.resize(nip);
     Mat3 Fm_first;  // the mechanical deformation gradient of the first point
     auto j2 = [&](Index k, const Mat3&, const Mat3& Fm) {
+      const LinearElastic& m = points[static_cast<std::size_t>(k)].material.constants;
       const material::J2FiniteResult r = material::j2_finite_strain(
-          mat.young, mat.poisson, hardening, committed.points[k], Fm.transpose() * Fm);
+          m.young, m.poisson, hardening, committed.points[k], Fm.transpose() * Fm);
       out.peeq(k) = r.state.equivalent_plastic_strain;
       out.state.points[k] = r.state;
       const PointWork before = committed.work.empty() ? PointWork{} : committed.work[k];
@@ -64,17 +65,18 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElasti
       return TotalLagrangianResponse{
           r.stress, tangent_choice == PlasticTangent::exact ? r.tangent : r.kirchhoff_tangent};
     };
-    integrate_total_lagrangian(points, values, mat.expansion, tangent, j2, f, K, out.cauchy,
+    integrate_total_lagrangian(points, values, tangent, j2, f, K, out.cauchy,
                                out.green_lagrange);
     if (hourglass && tangent && tangent_choice == PlasticTangent::exact) {
       BMatrix B;
       b_nonlinear(points[0].dNdX, Fm_first, B);  // dE_m of the one point
       hourglass->gradient = B.transpose() * hourglass_modulus_gradient(
-                                                mat, hardening, committed.points[0],
+                                                points.front().material.constants, hardening,
+                                                committed.points[0],
                                                 Fm_first.transpose() * Fm_first);
     }
   };
-  run_point_kernel(type, X, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
+  run_point_kernel(type, X, mat, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
                    out.tangent, out.state.modes);
 }
 

@@ -38,7 +38,7 @@ struct NlgeomPlasticResult {
 /// material, the current C_1111 of the point's tangent; C3D8I condenses its
 /// incompatible modes by a local Newton iteration (with the chosen tangent too). SolverError for
 /// an inverted element or a failed local iteration.
-void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
+void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
                             const material::HardeningTable& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out,

@@ -202,7 +202,7 @@ void assign_sections(DeckState& state) {
                                                         " is not defined");
     }
     const model::Material& mat = model.materials[static_cast<std::size_t>(material->second)];
-    if (mat.young <= 0) {
+    if (mat.elastic.empty()) {
       throw InputError(raw.where, "*SOLID SECTION",
                        "material " + raw.material + " has no *ELASTIC constants");
     }

@@ -11,7 +11,7 @@ the FIRST check a deck breaks is its exclusion reason:
       (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
       - no parameter in FORBIDDEN_PARAMETERS (TIME DELAY, USER) on any keyword;
-      - *ELASTIC and *EXPANSION: TYPE= absent or ISO, exactly one data line (no table);
+      - *ELASTIC and *EXPANSION: TYPE= absent or ISO (temperature tables admitted);
       - *SOLID SECTION: no ORIENTATION=;
       - *INITIAL CONDITIONS: TYPE=TEMPERATURE only;
       - *BOUNDARY: first and last dof within 1-3; *CLOAD: dof within 1-3;
@@ -316,8 +316,6 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
         if keyword in ("ELASTIC", "EXPANSION"):
             if params.get("TYPE", "ISO").upper() not in ("ISO", "ISOTROPIC"):
                 return f"*{keyword}, TYPE={params['TYPE'].upper()}"
-            if len(data) != 1:
-                return f"*{keyword} with {len(data)} data lines (table)"
         elif keyword == "SOLID SECTION" and "ORIENTATION" in params:
             return "*SOLID SECTION, ORIENTATION"
         elif keyword == "INITIAL CONDITIONS" and params.get("TYPE", "").upper() != "TEMPERATURE":

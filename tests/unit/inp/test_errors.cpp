@@ -49,9 +49,6 @@ std::vector<BadDeck> bad_decks() {
        "WOOD is not defined"},
       {"orientation", model_plus("*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL, ORIENTATION=O\n"),
        27, "*SOLID SECTION", "ORIENTATION"},
-      {"temperature dependent elastic",
-       model_plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3, 20.\n2., .3, 100.\n"), 30, "*ELASTIC",
-       "temperature-dependent"},
       {"elastic without material", "*ELASTIC\n1., .3\n", 1, "*ELASTIC", "*MATERIAL"},
       {"anisotropic elastic", model_plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ORTHO\n1\n"), 28,
        "*ELASTIC", "TYPE=ORTHO"},
@@ -136,6 +133,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_
                          case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTransform, inpErrors,
                          ::testing::ValuesIn(test::transform_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedMaterial, inpErrors,
+                         ::testing::ValuesIn(test::material_bad_decks()), case_name);
 
 }  // namespace
 }  // namespace kontakt::inp
