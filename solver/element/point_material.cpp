@@ -12,7 +12,7 @@ ThermoElastic::ThermoElastic(const LinearElastic& constant) {
 PointElastic ThermoElastic::at(Real T0, Real dT) const {
   const Real T = T0 + dT;
   const auto [young, poisson] = elastic.at(T);
-  PointElastic p{{young, poisson, 0}, 0};
+  PointElastic p{{young, poisson, 0}, 0, T};
   if (expansion.empty()) return p;
   p.constants.expansion = expansion.at(T)[0];
   // A table's secant coefficient refers to ZERO; one row is the same coefficient at every T.

@@ -21,6 +21,7 @@ struct LinearElastic {
 struct PointElastic {
   LinearElastic constants;
   Real thermal_strain = 0;
+  Real temperature = 0;  ///< initial + change (what temperature-dependent hardening is read at)
 };
 
 /// An element's isotropic thermo-elastic material: *ELASTIC and *EXPANSION tables evaluated at

@@ -6,7 +6,7 @@
 namespace kontakt::element {
 
 void plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
-                     const material::HardeningTable& hardening, const MatX3& u, const VecX& dT,
+                     const material::HardeningCurves& hardening, const MatX3& u, const VecX& dT,
                      const ElementState& committed, bool want_tangent, PlasticResult& out) {
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
                     VecX& f, MatX& K, HourglassModulus* hourglass) {
@@ -24,13 +24,15 @@ void plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
     out.energy_density.resize(nip);
     out.state.points.resize(nip);
     BMatrix B;
+    material::HardeningTable scratch;
     for (Index k = 0; k < nip; ++k) {
       const KernelPoint& p = points[k];
       b_matrix(p.dNdX, B);
       const Vec6 eps = B * ue;  // engineering shear
       const Real thermal = p.material.thermal_strain;
       const LinearElastic& m = p.material.constants;
-      const material::J2Result r = material::j2_return_map(m.young, m.poisson, hardening,
+      const material::J2Result r = material::j2_return_map(m.young, m.poisson,
+                                                           hardening.at(p.material.temperature, scratch),
                                                            committed.points[k], eps, thermal);
       f.noalias() += p.dv * (B.transpose() * r.stress);
       if (tangent) K.noalias() += p.dv * (B.transpose() * r.tangent * B);

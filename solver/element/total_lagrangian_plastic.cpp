@@ -31,7 +31,7 @@ Vec6 hourglass_modulus_gradient(const LinearElastic& mat, const material::Harden
 }  // namespace
 
 void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
-                            const material::HardeningTable& hardening, const MatX3& u,
+                            const material::HardeningCurves& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out, PlasticTangent tangent_choice) {
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
@@ -44,10 +44,13 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElasti
     out.state.points.resize(nip);
     out.state.work.resize(nip);
     Mat3 Fm_first;  // the mechanical deformation gradient of the first point
+    material::HardeningTable scratch, first_curve;
     auto j2 = [&](Index k, const Mat3&, const Mat3& Fm) {
-      const LinearElastic& m = points[static_cast<std::size_t>(k)].material.constants;
+      const PointElastic& point = points[static_cast<std::size_t>(k)].material;
+      const LinearElastic& m = point.constants;
+      const material::HardeningTable& curve = hardening.at(point.temperature, scratch);
       const material::J2FiniteResult r = material::j2_finite_strain(
-          m.young, m.poisson, hardening, committed.points[k], Fm.transpose() * Fm);
+          m.young, m.poisson, curve, committed.points[k], Fm.transpose() * Fm);
       out.peeq(k) = r.state.equivalent_plastic_strain;
       out.state.points[k] = r.state;
       const PointWork before = committed.work.empty() ? PointWork{} : committed.work[k];
@@ -60,6 +63,7 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElasti
       out.energy_density(k) = after.density;
       if (k == 0) {
         Fm_first = Fm;
+        first_curve = curve;
         if (hourglass) hourglass->value = r.kirchhoff_tangent(0, 0);
       }
       return TotalLagrangianResponse{
@@ -71,7 +75,7 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElasti
       BMatrix B;
       b_nonlinear(points[0].dNdX, Fm_first, B);  // dE_m of the one point
       hourglass->gradient = B.transpose() * hourglass_modulus_gradient(
-                                                points.front().material.constants, hardening,
+                                                points.front().material.constants, first_curve,
                                                 committed.points[0],
                                                 Fm_first.transpose() * Fm_first);
     }

@@ -69,28 +69,40 @@ void handle_plastic(const Record& record, DeckState& state) {
     fail(record, "HARDENING=" + hardening + " is not supported yet (only ISOTROPIC)");
   model::Material& material = current_material(record, state);
   require_line_count(record, 1, 10000);
-  std::optional<Real> temperature;
+  // One curve per temperature (the third column, 0 when empty), its lines together.
+  material::HardeningCurves curves;
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 2, 3);
-    require_one_temperature(record, line, 2, temperature, "temperature-dependent hardening");
     const Real stress = real_field(record, line, 0), strain = real_field(record, line, 1);
+    const Real temperature = real_field_or(record, line, 2, 0);
     if (!(stress >= 0)) fail(record, line, "the yield stress must not be negative");
-    if (material.plastic.empty() ? strain != 0 : !(strain > material.plastic.back().second))
-      fail(record, line, material.plastic.empty()
-                             ? "the first row must be at zero plastic strain (initial yield)"
+    const bool new_curve = curves.empty() || temperature != curves.temperatures.back();
+    if (new_curve && !curves.empty() && !(temperature > curves.temperatures.back()))
+      fail(record, line, "temperatures must increase from curve to curve (one curve per "
+                         "temperature, its lines together)");
+    if (new_curve ? strain != 0 : !(strain > curves.curves.back().points.back().second))
+      fail(record, line, new_curve
+                             ? "the first row of a curve must be at zero plastic strain (initial "
+                               "yield)"
                              : "plastic strains must increase from row to row");
+    if (new_curve) {
+      curves.temperatures.push_back(temperature);
+      curves.curves.emplace_back();
+    }
+    std::vector<std::pair<Real, Real>>& points = curves.curves.back().points;
     // The return mapping needs 3G + H > 0: a curve that softens faster has no unique answer
     // (G the smallest shear modulus of a temperature table).
-    if (!material.plastic.empty() && !material.elastic.empty()) {
-      const auto [s0, e0] = material.plastic.back();
+    if (!points.empty() && !material.elastic.empty()) {
+      const auto [s0, e0] = points.back();
       Real shear = std::numeric_limits<Real>::infinity();
       for (const auto& [young, poisson] : material.elastic.rows)
         shear = std::min(shear, young / (2 * (1 + poisson)));
       if (!((stress - s0) / (strain - e0) > -3 * shear))
         fail(record, line, "the curve softens faster than -3G (G the shear modulus of *ELASTIC)");
     }
-    material.plastic.emplace_back(stress, strain);
+    points.emplace_back(stress, strain);
   }
+  material.plastic = std::move(curves);
 }
 
 void handle_density(const Record& record, DeckState& state) {

@@ -1,7 +1,8 @@
 // Temperature-dependent elasticity in every solid kernel: the constants of each integration
 // point at its own temperature (initial + change), ccx's thermal strain of a secant table
 // measured with ccx 2.20, consistency between the linear, total Lagrangian and plastic kernels,
-// and the nonlinear tangents by finite differences and a Taylor test.
+// and the nonlinear tangents (hardening curves by temperature too) by finite differences and a
+// Taylor test.
 #include <gtest/gtest.h>
 
 #include "element/solid_plastic.hpp"
@@ -155,10 +156,14 @@ TEST_P(ThermoElasticKernel, TotalLagrangianTangentMatchesCentralDifferences) {
 }
 
 TEST_P(ThermoElasticKernel, PlasticTangentsMatchCentralDifferences) {
-  // Yield 2 against stresses of order E * 1e-2 = 4..10: every point yields.
+  // Yield 1.5..2 against stresses of order E * 1e-2 = 4..10: every point yields, each on the
+  // hardening curve of its temperature (50..250: between and beyond the two curves).
   const ThermoElastic m = table(1e-4);
   const VecX dT = field();
-  const material::HardeningTable hardening{{{2.0, 0.0}, {3.0, 0.05}}};
+  material::HardeningCurves hardening;
+  hardening.temperatures = {100, 200};
+  hardening.curves = {material::HardeningTable{{{2.0, 0.0}, {3.0, 0.05}}},
+                      material::HardeningTable{{{1.5, 0.0}, {2.0, 0.03}, {2.2, 0.1}}}};
   ElementState virgin;
   virgin.points.resize(static_cast<std::size_t>(traits(type()).n_ip));
   const MatX3 u = displacement(0.1);

@@ -42,9 +42,21 @@ std::vector<BadDeck> material_bad_decks() {
       {"density table row not positive",
        plus("*MATERIAL, NAME=T\n*DENSITY\n7.8E-9, 0.\n0., 100.\n"), 30, "*DENSITY",
        "density must be positive"},
-      {"plastic temperature table",
-       plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3\n*PLASTIC\n1., 0., 20.\n1., 0., 100.\n"), 32,
-       "*PLASTIC", "temperature-dependent hardening"},
+      {"plastic curves temperatures descending",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3\n*PLASTIC\n1., 0., 100.\n1., 0., 20.\n"), 32,
+       "*PLASTIC", "temperatures must increase from curve to curve"},
+      {"plastic curves interleaved",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3\n*PLASTIC\n1., 0., 20.\n1., 0., 100.\n"
+            "2., .1, 20.\n"),
+       33, "*PLASTIC", "temperatures must increase from curve to curve"},
+      {"plastic second curve not at zero strain",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3\n*PLASTIC\n1., 0., 20.\n2., .1, 20.\n"
+            "1., .05, 100.\n"),
+       33, "*PLASTIC", "the first row of a curve must be at zero plastic strain"},
+      {"plastic strains not increasing in the second curve",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3\n*PLASTIC\n1., 0., 20.\n1., 0., 100.\n"
+            "2., 0., 100.\n"),
+       33, "*PLASTIC", "plastic strains must increase from row to row"},
   };
 }
 
@@ -82,6 +94,25 @@ TEST(inpMaterial, TemperatureTablesAreStoredRowByRow) {
   // The fixture's constant material: one row.
   EXPECT_EQ(material(m, "STEEL").elastic.rows.size(), 1u);
   EXPECT_EQ(material(m, "STEEL").elastic.rows[0][0], 210000.);
+}
+
+TEST(inpMaterial, PlasticCurvesByTemperature) {
+  const model::Model m = read_deck_text(test::two_cubes_model() +
+                                        "*MATERIAL, NAME=HOT\n"
+                                        "*ELASTIC\n"
+                                        "210000., .3\n"
+                                        "*PLASTIC\n"
+                                        "800., 0., 273.\n"
+                                        "900., .05, 273.\n"
+                                        "700., 0., 873.\n"
+                                        "750., .04, 873.\n"
+                                        "800., .13, 873.\n");
+  const material::HardeningCurves& p = material(m, "HOT").plastic;
+  EXPECT_EQ(p.temperatures, (std::vector<Real>{273., 873.}));
+  ASSERT_EQ(p.curves.size(), 2u);
+  EXPECT_EQ(p.curves[0].points.size(), 2u);
+  ASSERT_EQ(p.curves[1].points.size(), 3u);
+  EXPECT_EQ(p.curves[1].points[2], std::make_pair(800., .13));
 }
 
 TEST(inpMaterial, SofteningIsCheckedAgainstTheSmallestShearModulusOfTheTable) {
