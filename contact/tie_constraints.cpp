@@ -157,7 +157,9 @@ void report(model::Model& model, const model::Tie& tie, Real tolerance,
 /// A tie with SCHEME= as a surface-to-surface pair with a TIED law of its own in every step:
 /// K = lambda = 50 E (ccx's default penalty, E of the first material), mu unused.
 void add_tied_contact(model::Model& model, const model::Tie& tie) {
-  const Real young = model.materials.empty() ? 0 : model.materials.front().young;
+  const Real young = model.materials.empty() || model.materials.front().elastic.empty()
+                         ? 0
+                         : model.materials.front().elastic.rows.front()[0];  // its first row
   if (!(young > 0))
     throw InputError(tie.where, "*TIE",
                      "tie " + tie.name + ": SCHEME= takes its stiffness from Young's modulus of "

@@ -19,10 +19,12 @@ inline const model::Material& element_material_def(const model::Model& model,
   return model.materials[model.sections[el.section].material];
 }
 
-inline element::LinearElastic element_material(const model::Model& model,
-                                               const model::Element& el) {
-  const auto& mat = element_material_def(model, el);
-  return {mat.young, mat.poisson, mat.expansion.value_or(0.0)};
+/// Whether some material's elastic constants follow the temperature (a stiffness then changes
+/// with the temperature field and cannot be reused across temperatures).
+inline bool any_temperature_dependent_stiffness(const model::Model& model) {
+  for (const auto& m : model.materials)
+    if (m.elastic.rows.size() > 1) return true;
+  return false;
 }
 
 /// Nodal values of one element gathered from a per-node vector.
@@ -30,6 +32,21 @@ inline VecX element_values(const model::Element& el, const VecX& nodal) {
   VecX v(el.nodes.size());
   for (std::size_t a = 0; a < el.nodes.size(); ++a) v[a] = nodal[el.nodes[a]];
   return v;
+}
+
+/// The element's elastic material with its nodes' initial temperatures, which the
+/// temperature-dependent constants and thermal strain are evaluated from.
+inline element::ThermoElastic element_material(const model::Model& model,
+                                               const model::Element& el) {
+  const auto& mat = element_material_def(model, el);
+  element::ThermoElastic m;
+  m.elastic = mat.elastic;
+  m.expansion = mat.expansion;
+  m.expansion_zero = mat.expansion_zero;
+  if (model.initial_temperatures.size()) {
+    m.initial_temperature = element_values(el, model.initial_temperatures);
+  }
+  return m;
 }
 
 /// Displacements of one element's nodes (n x 3) from the full dof vector.

@@ -47,8 +47,10 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
   const auto t0 = Clock::now();
   auto wall = [&] { return std::chrono::duration<Real>(Clock::now() - t0).count(); };
 
-  // Reused across steps while the constraint layout holds; K does not change in a linear model.
+  // Reused across steps while the constraint layout holds; K does not change in a linear model
+  // unless its elastic constants follow a temperature field the steps change.
   ConstraintLayout layout;
+  const bool stiffness_follows_temperature = any_temperature_dependent_stiffness(model);
   auto solver = linsolve::make_cholmod_solver();
   linsolve::SpdSolve spd(*solver);
   bool factorised = false;
@@ -67,7 +69,8 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     const Real period = step.procedure.period;
     total_time += period;
 
-    if (layout.update(model, step, *solver, threads)) factorised = false;
+    if (layout.update(model, step, *solver, threads) || stiffness_follows_temperature)
+      factorised = false;
     const assembly::DofMap& dofs = layout.dofs();
     const assembly::AssemblyPlan& plan = layout.plan();
 
@@ -84,9 +87,10 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
           naming_element(el, [&] {
             const MatX3 X = element_coords(model, el);
             const auto mat = element_material(model, el);
-            element::linear_stiffness(el.type, X, mat, K);
-            if (has_thermal_strain && mat.expansion != 0)
-              element::thermal_load(el.type, X, mat, element_values(el, dT), f);
+            const VecX dTe = element_values(el, dT);
+            element::linear_stiffness(el.type, X, mat, dTe, K);
+            if (has_thermal_strain && !mat.expansion.empty())
+              element::thermal_load(el.type, X, mat, dTe, f);
             else
               f = VecX::Zero(K.rows());
           });

@@ -120,7 +120,9 @@ class NonlinearStatic {
         model_, layout_.dofs(),
         external_forces(model_, step, sc.period, total_time_start_ + sc.period, 1.0));
 
-    element_cache_ = {.usable = !step.nlgeom && !any_plastic_, .generation = 0, .values = {}};
+    // A linear element's stiffness is constant unless its constants follow the temperature.
+    element_cache_ = {.usable = !step.nlgeom && !any_plastic_ && !any_temperature_dependent_stiffness(model_),
+                      .generation = 0, .values = {}};
     sc.controls = contact_.solution_controls(
         options_.controls ? *options_.controls : step.controls, step.contact_controls);
     convergence_.emplace(sc.controls, last_q_bar_);

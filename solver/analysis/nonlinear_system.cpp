@@ -10,10 +10,6 @@ namespace kontakt::analysis {
 
 namespace {
 
-material::HardeningTable hardening_of(const model::Model& model, const model::Element& el) {
-  return {element_material_def(model, el).plastic};
-}
-
 /// One element's tangent, internal force and point output: total Lagrangian under NLGEOM
 /// (finite-strain J2 for plastic materials), small-strain J2 return mapping for plastic
 /// materials, linear elasticity otherwise (whose constant stiffness is skipped when `K` is null).
@@ -26,7 +22,7 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   const bool plastic = !element_material_def(model, el).plastic.empty();
   if (nlgeom && plastic) {
     element::NlgeomPlasticResult r;
-    element::nlgeom_plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed,
+    element::nlgeom_plastic_element(el.type, X, mat, element_material_def(model, el).plastic, ue, dTe, committed,
                                     true, r);
     *K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
@@ -42,7 +38,7 @@ void element_response(const model::Model& model, const model::Element& el, bool 
     out = {std::move(r.cauchy), std::move(r.green_lagrange), std::move(r.energy_density), VecX()};
   } else if (plastic) {
     element::PlasticResult r;
-    element::plastic_element(el.type, X, mat, hardening_of(model, el), ue, dTe, committed, true, r);
+    element::plastic_element(el.type, X, mat, element_material_def(model, el).plastic, ue, dTe, committed, true, r);
     *K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
     trial = std::move(r.state);
@@ -50,7 +46,7 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   } else {
     element::IpResults r;
     element::recover(el.type, X, mat, ue, dTe, r);
-    if (K) element::linear_stiffness(el.type, X, mat, *K);
+    if (K) element::linear_stiffness(el.type, X, mat, dTe, *K);
     f_int = std::move(r.internal_force);
     trial = committed;
     out = {std::move(r.stress), std::move(r.strain), std::move(r.energy_density), VecX()};

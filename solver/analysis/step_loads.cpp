@@ -73,7 +73,7 @@ VecX body_forces(const model::Model& model, const model::Step& step, Real step_t
       VecX fe;
       naming_element(el, [&] {
         element::body_load(el.type, element_coords(model, el), element_displacements(el, u),
-                           *element_material_def(model, el).density, b, fe);
+                           element_material_def(model, el).density.rows.front()[0], b, fe);
       });
       for (std::size_t a = 0; a < el.nodes.size(); ++a)
         f.segment<3>(3 * el.nodes[a]) += fe.segment<3>(3 * static_cast<Index>(a));

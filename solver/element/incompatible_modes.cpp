@@ -55,9 +55,8 @@ struct Blocks {
   Vec9 fa = Vec9::Zero();
 };
 
-Blocks integrate(const MatX3& X, const LinearElastic& mat, const VecX& dT) {
+Blocks integrate(const MatX3& X, const ThermoElastic& mat, const VecX& dT) {
   const CentroidFrame c = centroid_frame(X);
-  const Mat6 D = elasticity_matrix(mat);
   Blocks k;
   BMatrix B;
   for (const auto& q : volume_rule(ElementType::C3D8I)) {
@@ -65,11 +64,13 @@ Blocks integrate(const MatX3& X, const LinearElastic& mat, const VecX& dT) {
     b_matrix(g.dNdx, B);
     const GMatrix G = g_matrix(c, q.xi, g.detJ);
     const Real dv = q.weight * g.detJ;
+    const PointElastic m = point_material(mat, ElementType::C3D8I, q.xi, g.N, dT);
+    const Mat6 D = elasticity_matrix(m.constants);
     k.Kuu.noalias() += dv * (B.transpose() * D * B);
     k.Kua.noalias() += dv * (B.transpose() * D * G);
     k.Kaa.noalias() += dv * (G.transpose() * D * G);
     if (dT.size() == 8) {
-      const Vec6 s_th = D * thermal_strain(mat, point_temperature(ElementType::C3D8I, q.xi, g.N, dT));
+      const Vec6 s_th = D * thermal_strain(m);
       k.fu.noalias() += dv * (B.transpose() * s_th);
       k.fa.noalias() += dv * (G.transpose() * s_th);
     }
@@ -79,21 +80,21 @@ Blocks integrate(const MatX3& X, const LinearElastic& mat, const VecX& dT) {
 
 }  // namespace
 
-void incompatible_stiffness(const MatX3& X, const LinearElastic& mat, MatX& K) {
-  const Blocks k = integrate(X, mat, VecX());
+void incompatible_stiffness(const MatX3& X, const ThermoElastic& mat, const VecX& dT, MatX& K) {
+  const Blocks k = integrate(X, mat, dT.size() == 8 ? dT : VecX());
   const Eigen::PartialPivLU<Mat9> lu(k.Kaa);
   K = k.Kuu - k.Kua * lu.solve(k.Kua.transpose());
   K = 0.5 * (K + K.transpose()).eval();
 }
 
-void incompatible_thermal_load(const MatX3& X, const LinearElastic& mat, const VecX& dT, VecX& f) {
+void incompatible_thermal_load(const MatX3& X, const ThermoElastic& mat, const VecX& dT, VecX& f) {
   KONTAKT_REQUIRE(dT.size() == 8, "thermal_load: wrong number of temperatures");
   const Blocks k = integrate(X, mat, dT);
   const Eigen::PartialPivLU<Mat9> lu(k.Kaa);
   f = k.fu - k.Kua * lu.solve(k.fa);
 }
 
-void incompatible_strains(const MatX3& X, const LinearElastic& mat, const MatX3& u,
+void incompatible_strains(const MatX3& X, const ThermoElastic& mat, const MatX3& u,
                           const VecX& dT, Eigen::Matrix<Real, 8, 6>& strains) {
   const Blocks k = integrate(X, mat, dT);
   const Eigen::Map<const Vec24> ue(u.data());
@@ -108,7 +109,8 @@ void incompatible_strains(const MatX3& X, const LinearElastic& mat, const MatX3&
   }
 }
 
-std::vector<KernelPoint> incompatible_kernel_points(const MatX3& X, const VecX& dT) {
+std::vector<KernelPoint> incompatible_kernel_points(const MatX3& X, const ThermoElastic& mat,
+                                                   const VecX& dT) {
   const CentroidFrame c = centroid_frame(X);
   const auto rule = volume_rule(ElementType::C3D8I);
   std::vector<KernelPoint> points(rule.size());
@@ -119,7 +121,7 @@ std::vector<KernelPoint> incompatible_kernel_points(const MatX3& X, const VecX& 
     p.dNdX.topRows(8) = g.dNdx;
     p.dNdX.bottomRows(3) = mode_gradients(c, rule[k].xi, g.detJ);
     p.dv = rule[k].weight * g.detJ;
-    p.dT = point_temperature(ElementType::C3D8I, rule[k].xi, g.N, dT);
+    p.material = point_material(mat, ElementType::C3D8I, rule[k].xi, g.N, dT);
   }
   return points;
 }

@@ -8,7 +8,7 @@ namespace kontakt::element {
 namespace {
 
 // Engineering total strain at every point (n_ip x 6).
-MatX6 point_strains(ElementType type, const MatX3& X, const LinearElastic& mat, const MatX3& u,
+MatX6 point_strains(ElementType type, const MatX3& X, const ThermoElastic& mat, const MatX3& u,
                     const VecX& dT) {
   const auto rule = volume_rule(type);
   MatX6 eps(static_cast<Index>(rule.size()), 6);
@@ -30,7 +30,7 @@ MatX6 point_strains(ElementType type, const MatX3& X, const LinearElastic& mat, 
 
 }  // namespace
 
-void recover(ElementType type, const MatX3& X, const LinearElastic& mat, const MatX3& u,
+void recover(ElementType type, const MatX3& X, const ThermoElastic& mat, const MatX3& u,
              const VecX& dT, IpResults& out) {
   const Topology topo = volume_topology(type);
   const int n = node_count(topo);
@@ -38,7 +38,6 @@ void recover(ElementType type, const MatX3& X, const LinearElastic& mat, const M
   const VecX temp = dT.size() == n ? dT : VecX::Zero(n);
   const auto rule = volume_rule(type);
   const Index nip = static_cast<Index>(rule.size());
-  const Mat6 D = elasticity_matrix(mat);
   const MatX6 eps = point_strains(type, X, mat, u, temp);
   out.stress.resize(nip, 6);
   out.strain.resize(nip, 6);
@@ -46,11 +45,14 @@ void recover(ElementType type, const MatX3& X, const LinearElastic& mat, const M
   out.internal_force.setZero(3 * n);
   out.volume = 0;
   BMatrix B;
+  Real hourglass_modulus = 0;  // C3D8R: its one point's
   for (Index k = 0; k < nip; ++k) {
     const PointGeometry g = rule_point_geometry(type, X, rule[k].xi);
+    const PointElastic m = point_material(mat, type, rule[k].xi, g.N, temp);
+    hourglass_modulus = m.constants.young;
     const Vec6 e = eps.row(k).transpose();
-    const Vec6 e_el = e - thermal_strain(mat, point_temperature(type, rule[k].xi, g.N, temp));
-    const Vec6 s = D * e_el;
+    const Vec6 e_el = e - thermal_strain(m);
+    const Vec6 s = elasticity_matrix(m.constants) * e_el;
     out.stress.row(k) = s.transpose();
     out.strain.row(k) = tensor_strain(e).transpose();
     out.energy_density(k) = 0.5 * s.dot(e_el);
@@ -61,7 +63,7 @@ void recover(ElementType type, const MatX3& X, const LinearElastic& mat, const M
   }
   if (type == ElementType::C3D8R) {
     MatX Khg;
-    hourglass_stiffness(X, mat.young, Khg);
+    hourglass_stiffness(X, hourglass_modulus, Khg);
     out.internal_force += Khg * Eigen::Map<const VecX>(u.data(), u.size());
   }
 }

@@ -37,26 +37,32 @@ void b_matrix(const ShapeGrad& dNdx, BMatrix& B);
 /// Engineering strain (gamma) -> tensor strain (eps_ij) in Voigt order.
 Vec6 tensor_strain(const Vec6& engineering);
 
-/// Isotropic thermal strain vector alpha*dT (engineering = tensor: no shear).
-Vec6 thermal_strain(const LinearElastic& mat, Real dT);
+/// Isotropic thermal strain vector (engineering = tensor: no shear) of a point's material.
+Vec6 thermal_strain(const PointElastic& mat);
 
 /// Temperature change at natural point xi (shape values N there) in ccx's convention; 0 when
 /// dT is empty (thermal_interpolation.cpp).
 Real point_temperature(ElementType type, const Vec3& xi, const ShapeVec& N, const VecX& dT);
 
+/// The material at natural point xi (shape values N) of `type`: initial temperature and change
+/// (nodal dT, empty: none) interpolated by point_temperature (point_material.cpp).
+PointElastic point_material(const ThermoElastic& mat, ElementType type, const Vec3& xi,
+                            const ShapeVec& N, const VecX& dT);
+
 /// An integration point as the nonlinear kernels see it: gradients, with respect to the
 /// reference coordinates, of the functions interpolating the element's value rows (the nodes,
-/// then any internal modes), the volume it carries and its temperature change.
+/// then any internal modes), the volume it carries and its material at its temperature.
 struct KernelPoint {
   ShapeGrad dNdX;  ///< n_values x 3
   Real dv = 0;     ///< weight times Jacobian determinant
-  Real dT = 0;
+  PointElastic material;
 };
 
-/// The points of `type`'s rule (C3D8R: its mean-gradient point), temperatures from the nodal
-/// changes dT (empty: none). C3D8I gets the 8 nodal rows only (incompatible_kernel_points adds
-/// its modes).
-std::vector<KernelPoint> kernel_points(ElementType type, const MatX3& X, const VecX& dT);
+/// The points of `type`'s rule (C3D8R: its mean-gradient point), the material evaluated at the
+/// nodal temperature changes dT (empty: none). C3D8I gets the 8 nodal rows only
+/// (incompatible_kernel_points adds its modes).
+std::vector<KernelPoint> kernel_points(ElementType type, const MatX3& X, const ThermoElastic& mat,
+                                       const VecX& dT);
 
 /// The modulus of C3D8R's hourglass stiffness as a kernel reports it, with its derivative
 /// with respect to the value rows (3n; empty: constant, or not needed by the tangent asked).
@@ -77,7 +83,8 @@ using PointKernel =
 /// or empty for zero; the amplitudes reached go to `modes`; both in the element's frame,
 /// incompatible_frame_rotation), C3D8R with its hourglass stiffness (reference
 /// configuration, modulus from the kernel) added, all others directly (`modes` left empty).
-void run_point_kernel(ElementType type, const MatX3& X, const MatX3& u, const VecX& dT,
+void run_point_kernel(ElementType type, const MatX3& X, const ThermoElastic& mat, const MatX3& u,
+                      const VecX& dT,
                       const MatX3& modes_start, bool want_tangent, const PointKernel& kernel,
                       VecX& f, MatX& K, MatX3& modes);
 
@@ -121,26 +128,28 @@ using TotalLagrangianMaterial =
 /// Total Lagrangian forces f = sum dv B_NL(F)^T S and tangent
 /// K = sum dv (B_NL(F)^T D B_NL(F_m) + initial stress) over the points, with the Cauchy stress
 /// and total Green-Lagrange strain of every point (n_ip x 6, resized here). F_m is ccx's
-/// mechanical deformation gradient of the point's thermal strain `expansion * dT`.
-/// SolverError for an inverted point.
+/// mechanical deformation gradient of the point's thermal strain. SolverError for an inverted
+/// point.
 void integrate_total_lagrangian(const std::vector<KernelPoint>& points, const MatX3& u,
-                                Real expansion, bool want_tangent,
+                                bool want_tangent,
                                 const TotalLagrangianMaterial& material, VecX& f, MatX& K,
                                 MatX6& cauchy, MatX6& green_lagrange);
 
 // --- C3D8I: Wilson-Taylor incompatible modes, condensed (incompatible_modes.cpp) ---------------
 
 /// Condensed stiffness (24 x 24).
-void incompatible_stiffness(const MatX3& X, const LinearElastic& mat, MatX& K);
+/// Condensed stiffness (24 x 24) at nodal temperature changes dT (8; empty: none).
+void incompatible_stiffness(const MatX3& X, const ThermoElastic& mat, const VecX& dT, MatX& K);
 /// Condensed thermal load (24).
-void incompatible_thermal_load(const MatX3& X, const LinearElastic& mat, const VecX& dT, VecX& f);
+void incompatible_thermal_load(const MatX3& X, const ThermoElastic& mat, const VecX& dT, VecX& f);
 /// Total engineering strain at each of the 8 points, internal modes recovered from u and dT.
-void incompatible_strains(const MatX3& X, const LinearElastic& mat, const MatX3& u,
+void incompatible_strains(const MatX3& X, const ThermoElastic& mat, const MatX3& u,
                           const VecX& dT, Eigen::Matrix<Real, 8, 6>& strains);
 
 /// The 8 points of C3D8I with 11 value rows each: the 8 nodes, then the three modes, whose
 /// gradients use the centroid Jacobian scaled by det(J0)/det(J) as in the linear element.
-std::vector<KernelPoint> incompatible_kernel_points(const MatX3& X, const VecX& dT);
+std::vector<KernelPoint> incompatible_kernel_points(const MatX3& X, const ThermoElastic& mat,
+                                                   const VecX& dT);
 
 /// Rotation of the polar decomposition of C3D8I's compatible deformation gradient at the
 /// centroid, for nodal displacements u: the frame the mode amplitudes are kept in between

@@ -67,35 +67,38 @@ Vec6 tensor_strain(const Vec6& engineering) {
   return e;
 }
 
-Vec6 thermal_strain(const LinearElastic& mat, Real dT) {
+Vec6 thermal_strain(const PointElastic& mat) {
   Vec6 e = Vec6::Zero();
-  e.head<3>().setConstant(mat.expansion * dT);
+  e.head<3>().setConstant(mat.thermal_strain);
   return e;
 }
 
-void linear_stiffness(ElementType type, const MatX3& X, const LinearElastic& mat, MatX& K) {
+void linear_stiffness(ElementType type, const MatX3& X, const ThermoElastic& mat, const VecX& dT,
+                      MatX& K) {
   if (type == ElementType::C3D8I) {
-    incompatible_stiffness(X, mat, K);
+    incompatible_stiffness(X, mat, dT, K);
     return;
   }
   const Topology topo = volume_topology(type);
   const int ndof = 3 * node_count(topo);
-  const Mat6 D = elasticity_matrix(mat);
   K.setZero(ndof, ndof);
   BMatrix B;
+  Real hourglass_modulus = 0;  // C3D8R: its one point's
   for (const auto& q : volume_rule(type)) {
     const PointGeometry g = rule_point_geometry(type, X, q.xi);
+    const PointElastic m = point_material(mat, type, q.xi, g.N, dT);
     b_matrix(g.dNdx, B);
-    K.noalias() += (q.weight * g.detJ) * (B.transpose() * D * B);
+    K.noalias() += (q.weight * g.detJ) * (B.transpose() * elasticity_matrix(m.constants) * B);
+    hourglass_modulus = m.constants.young;
   }
   if (type == ElementType::C3D8R) {
     MatX Khg;
-    hourglass_stiffness(X, mat.young, Khg);
+    hourglass_stiffness(X, hourglass_modulus, Khg);
     K += Khg;
   }
 }
 
-void thermal_load(ElementType type, const MatX3& X, const LinearElastic& mat, const VecX& dT,
+void thermal_load(ElementType type, const MatX3& X, const ThermoElastic& mat, const VecX& dT,
                   VecX& f) {
   if (type == ElementType::C3D8I) {
     incompatible_thermal_load(X, mat, dT, f);
@@ -103,13 +106,13 @@ void thermal_load(ElementType type, const MatX3& X, const LinearElastic& mat, co
   }
   const Topology topo = volume_topology(type);
   KONTAKT_REQUIRE(dT.size() == node_count(topo), "thermal_load: wrong number of temperatures");
-  const Mat6 D = elasticity_matrix(mat);
   f.setZero(3 * node_count(topo));
   BMatrix B;
   for (const auto& q : volume_rule(type)) {
     const PointGeometry g = rule_point_geometry(type, X, q.xi);
     b_matrix(g.dNdx, B);
-    const Vec6 sigma_th = D * thermal_strain(mat, point_temperature(type, q.xi, g.N, dT));
+    const PointElastic m = point_material(mat, type, q.xi, g.N, dT);
+    const Vec6 sigma_th = elasticity_matrix(m.constants) * thermal_strain(m);
     f.noalias() += (q.weight * g.detJ) * (B.transpose() * sigma_th);
   }
 }

@@ -5,22 +5,53 @@
 
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "material/temperature_table.hpp"
 
 namespace kontakt::element {
 
+/// Isotropic elastic constants at one temperature.
 struct LinearElastic {
   Real young = 0;
   Real poisson = 0;
   Real expansion = 0;  ///< secant thermal expansion coefficient; strain = expansion * dT
 };
 
-/// Element stiffness K (3n x 3n) for nodal coordinates X (n x 3, ccx local node order).
-/// C3D8I condenses its incompatible modes; C3D8R adds hourglass stiffness.
-void linear_stiffness(ElementType type, const MatX3& X, const LinearElastic& mat, MatX& K);
+/// What an integration point's material is: the constants at its temperature and its free
+/// thermal strain (isotropic) since the initial state.
+struct PointElastic {
+  LinearElastic constants;
+  Real thermal_strain = 0;
+  Real temperature = 0;  ///< initial + change (what temperature-dependent hardening is read at)
+};
 
-/// Equivalent nodal forces (3n) of the free thermal strain expansion * dT, with the temperature
-/// change dT given at the nodes (n) and interpolated to the integration points.
-void thermal_load(ElementType type, const MatX3& X, const LinearElastic& mat, const VecX& dT,
+/// An element's isotropic thermo-elastic material: *ELASTIC and *EXPANSION tables evaluated at
+/// each integration point's temperature, as ccx 2.20 does (measured on one-element decks): the
+/// constants interpolated at T = T0 + dT, and the thermal strain
+/// alpha(T) (T - Z) - alpha(T0) (T0 - Z) with Z the ZERO= reference temperature and alpha the
+/// secant coefficient (a constant alpha gives alpha dT whatever Z).
+struct ThermoElastic {
+  material::TemperatureTable<2> elastic;    ///< (E, nu) rows
+  material::TemperatureTable<1> expansion;  ///< secant alpha rows; empty: no thermal strain
+  Real expansion_zero = 0;
+  VecX initial_temperature;  ///< the element's nodal initial temperatures (empty: 0)
+
+  ThermoElastic() = default;
+  /// A constant material (what a deck without temperature columns gives).
+  ThermoElastic(const LinearElastic& constant);  // NOLINT(google-explicit-constructor)
+  /// The material of a point at initial temperature T0 heated by dT.
+  PointElastic at(Real T0, Real dT) const;
+};
+
+/// Element stiffness K (3n x 3n) for nodal coordinates X (n x 3, ccx local node order) at the
+/// nodal temperature changes dT (n; empty: none), which choose the constants of a
+/// temperature-dependent material. C3D8I condenses its incompatible modes; C3D8R adds
+/// hourglass stiffness.
+void linear_stiffness(ElementType type, const MatX3& X, const ThermoElastic& mat, const VecX& dT,
+                      MatX& K);
+
+/// Equivalent nodal forces (3n) of the free thermal strain, with the temperature change dT
+/// given at the nodes (n) and interpolated to the integration points.
+void thermal_load(ElementType type, const MatX3& X, const ThermoElastic& mat, const VecX& dT,
                   VecX& f);
 
 /// Consistent nodal forces (3n, over all element nodes) of a uniform pressure p on face
@@ -35,7 +66,7 @@ struct IpResults {
   VecX internal_force;   ///< 3n, integral of B^T sigma: the element's nodal forces
   Real volume = 0;
 };
-void recover(ElementType type, const MatX3& X, const LinearElastic& mat, const MatX3& u,
+void recover(ElementType type, const MatX3& X, const ThermoElastic& mat, const MatX3& u,
              const VecX& dT, IpResults& out);
 
 /// Integration-point weights times Jacobian determinants (n_ip): the volume each point carries.

@@ -5,12 +5,12 @@
 
 namespace kontakt::element {
 
-void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
-                     const material::HardeningTable& hardening, const MatX3& u, const VecX& dT,
+void plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
+                     const material::HardeningCurves& hardening, const MatX3& u, const VecX& dT,
                      const ElementState& committed, bool want_tangent, PlasticResult& out) {
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
                     VecX& f, MatX& K, HourglassModulus* hourglass) {
-    if (hourglass) hourglass->value = mat.young;  // small strain: the linear element's
+    if (hourglass) hourglass->value = points.front().material.constants.young;  // small strain: the linear element's
     const int n = static_cast<int>(values.rows());
     const Index nip = static_cast<Index>(points.size());
     KONTAKT_REQUIRE(static_cast<Index>(committed.points.size()) == nip,
@@ -24,12 +24,15 @@ void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
     out.energy_density.resize(nip);
     out.state.points.resize(nip);
     BMatrix B;
+    material::HardeningTable scratch;
     for (Index k = 0; k < nip; ++k) {
       const KernelPoint& p = points[k];
       b_matrix(p.dNdX, B);
       const Vec6 eps = B * ue;  // engineering shear
-      const Real thermal = mat.expansion * p.dT;
-      const material::J2Result r = material::j2_return_map(mat.young, mat.poisson, hardening,
+      const Real thermal = p.material.thermal_strain;
+      const LinearElastic& m = p.material.constants;
+      const material::J2Result r = material::j2_return_map(m.young, m.poisson,
+                                                           hardening.at(p.material.temperature, scratch),
                                                            committed.points[k], eps, thermal);
       f.noalias() += p.dv * (B.transpose() * r.stress);
       if (tangent) K.noalias() += p.dv * (B.transpose() * r.tangent * B);
@@ -43,7 +46,7 @@ void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
       out.state.points[k] = r.state;
     }
   };
-  run_point_kernel(type, X, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
+  run_point_kernel(type, X, mat, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
                    out.tangent, out.state.modes);
 }
 

@@ -9,6 +9,7 @@
 #include "element/element_state.hpp"
 #include "element/element_type.hpp"
 #include "element/solid_linear.hpp"
+#include "material/hardening_curves.hpp"
 #include "material/j2_small_strain.hpp"
 
 namespace kontakt::element {
@@ -26,9 +27,9 @@ struct PlasticResult {
 /// One element for nodal displacements u (n x 3), from the committed state (n_ip point states;
 /// C3D8I: the mode amplitudes its local solve starts from, empty for zero). C3D8R adds its
 /// elastic hourglass stiffness; C3D8I condenses its incompatible modes by a local Newton
-/// iteration (SolverError if it fails).
-void plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
-                     const material::HardeningTable& hardening, const MatX3& u, const VecX& dT,
+/// iteration (SolverError if it fails). Each point reads the hardening at its temperature.
+void plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
+                     const material::HardeningCurves& hardening, const MatX3& u, const VecX& dT,
                      const ElementState& committed, bool want_tangent, PlasticResult& out);
 
 }  // namespace kontakt::element

@@ -28,7 +28,7 @@ struct NlgeomResult {
 /// configuration (small hourglass strains); C3D8I condenses its incompatible modes, which enter
 /// the deformation gradient, by a local Newton iteration from `modes_start` (the amplitudes of
 /// the last converged state; empty: zero). SolverError for an inverted element.
-void nlgeom_element(ElementType type, const MatX3& X, const LinearElastic& mat, const MatX3& u,
+void nlgeom_element(ElementType type, const MatX3& X, const ThermoElastic& mat, const MatX3& u,
                     const VecX& dT, bool want_tangent, NlgeomResult& out,
                     const MatX3& modes_start = MatX3());
 

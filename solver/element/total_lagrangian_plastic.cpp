@@ -30,8 +30,8 @@ Vec6 hourglass_modulus_gradient(const LinearElastic& mat, const material::Harden
 
 }  // namespace
 
-void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
-                            const material::HardeningTable& hardening, const MatX3& u,
+void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
+                            const material::HardeningCurves& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out, PlasticTangent tangent_choice) {
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
@@ -44,9 +44,13 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElasti
     out.state.points.resize(nip);
     out.state.work.resize(nip);
     Mat3 Fm_first;  // the mechanical deformation gradient of the first point
+    material::HardeningTable scratch, first_curve;
     auto j2 = [&](Index k, const Mat3&, const Mat3& Fm) {
+      const PointElastic& point = points[static_cast<std::size_t>(k)].material;
+      const LinearElastic& m = point.constants;
+      const material::HardeningTable& curve = hardening.at(point.temperature, scratch);
       const material::J2FiniteResult r = material::j2_finite_strain(
-          mat.young, mat.poisson, hardening, committed.points[k], Fm.transpose() * Fm);
+          m.young, m.poisson, curve, committed.points[k], Fm.transpose() * Fm);
       out.peeq(k) = r.state.equivalent_plastic_strain;
       out.state.points[k] = r.state;
       const PointWork before = committed.work.empty() ? PointWork{} : committed.work[k];
@@ -59,22 +63,24 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElasti
       out.energy_density(k) = after.density;
       if (k == 0) {
         Fm_first = Fm;
+        first_curve = curve;
         if (hourglass) hourglass->value = r.kirchhoff_tangent(0, 0);
       }
       return TotalLagrangianResponse{
           r.stress, tangent_choice == PlasticTangent::exact ? r.tangent : r.kirchhoff_tangent};
     };
-    integrate_total_lagrangian(points, values, mat.expansion, tangent, j2, f, K, out.cauchy,
+    integrate_total_lagrangian(points, values, tangent, j2, f, K, out.cauchy,
                                out.green_lagrange);
     if (hourglass && tangent && tangent_choice == PlasticTangent::exact) {
       BMatrix B;
       b_nonlinear(points[0].dNdX, Fm_first, B);  // dE_m of the one point
       hourglass->gradient = B.transpose() * hourglass_modulus_gradient(
-                                                mat, hardening, committed.points[0],
+                                                points.front().material.constants, first_curve,
+                                                committed.points[0],
                                                 Fm_first.transpose() * Fm_first);
     }
   };
-  run_point_kernel(type, X, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
+  run_point_kernel(type, X, mat, u, dT, committed.modes, want_tangent, kernel, out.internal_force,
                    out.tangent, out.state.modes);
 }
 

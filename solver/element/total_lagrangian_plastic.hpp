@@ -10,6 +10,7 @@
 #include "element/element_state.hpp"
 #include "element/element_type.hpp"
 #include "element/solid_linear.hpp"
+#include "material/hardening_curves.hpp"
 #include "material/j2_finite_strain.hpp"
 
 namespace kontakt::element {
@@ -37,9 +38,10 @@ struct NlgeomPlasticResult {
 /// hourglass stiffness (reference configuration, as under SVK) with ccx's modulus for this
 /// material, the current C_1111 of the point's tangent; C3D8I condenses its
 /// incompatible modes by a local Newton iteration (with the chosen tangent too). SolverError for
-/// an inverted element or a failed local iteration.
-void nlgeom_plastic_element(ElementType type, const MatX3& X, const LinearElastic& mat,
-                            const material::HardeningTable& hardening, const MatX3& u,
+/// an inverted element or a failed local iteration. Each point reads the hardening at its
+/// temperature.
+void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
+                            const material::HardeningCurves& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out,
                             PlasticTangent tangent = PlasticTangent::kirchhoff);

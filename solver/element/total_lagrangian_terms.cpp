@@ -47,7 +47,7 @@ Vec6 voigt_from_tensor(const Mat3& t) {
 }
 
 void integrate_total_lagrangian(const std::vector<KernelPoint>& points, const MatX3& u,
-                                Real expansion, bool want_tangent,
+                                bool want_tangent,
                                 const TotalLagrangianMaterial& material, VecX& f, MatX& K,
                                 MatX6& cauchy, MatX6& green_lagrange) {
   const int n = static_cast<int>(u.rows());
@@ -60,7 +60,7 @@ void integrate_total_lagrangian(const std::vector<KernelPoint>& points, const Ma
   for (Index k = 0; k < nip; ++k) {
     const KernelPoint& p = points[k];
     const Mat3 F = deformation_gradient(p.dNdX, u);
-    const Real thermal = expansion * p.dT;
+    const Real thermal = p.material.thermal_strain;
     const Mat3 Fm = mechanical_deformation_gradient(F, thermal);
     const Real J = F.determinant();
     if (!(J > 0) || !(Fm.determinant() > 0))

@@ -23,15 +23,16 @@ Real first_young(const DeckState& state, const SourceLoc& where, const std::stri
   if (materials.empty())
     throw InputError(where, keyword, what + " needs the first material's Young's modulus; the "
                                             "deck has no *MATERIAL");
-  if (materials.front().young <= 0)
+  if (materials.front().elastic.empty())
     throw InputError(where, keyword, what + " needs the first material's Young's modulus; " +
                                          materials.front().name + " has no *ELASTIC");
-  return materials.front().young;
+  return materials.front().elastic.rows.front()[0];  // ccx: the first row of a table
 }
 
 std::string default_origin(const DeckState& state) {
   const model::Material& first = state.model.materials.front();
-  return "E = " + number(first.young) + " of " + first.name + ", the first material";
+  return "E = " + number(first.elastic.rows.front()[0]) + " of " + first.name +
+         ", the first material";
 }
 
 /// ccx's *SURFACE BEHAVIOR defaults: c0 <= 0 -> 1e-3; LINEAR/TIED K <= 0 -> 50 E; LINEAR

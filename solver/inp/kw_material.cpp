@@ -1,4 +1,7 @@
 // *MATERIAL, *ELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION.
+#include <algorithm>
+#include <limits>
+
 #include "inp/keyword_handlers.hpp"
 #include "inp/record_access.hpp"
 
@@ -11,17 +14,24 @@ model::Material& current_material(const Record& record, DeckState& state) {
   return state.model.materials[static_cast<std::size_t>(state.current_material)];
 }
 
-/// Material constants with an optional trailing temperature column. Several lines would be
-/// a temperature table, which we do not support.
-const DataLine& single_constant_line(const Record& record, std::size_t n_values) {
+/// N constants per data line and an optional temperature column (empty or missing: 0), one
+/// line per temperature, temperatures strictly ascending (ccx interpolates between them).
+/// `check` validates each row's constants (it fails on the line).
+template <std::size_t N, class Check>
+material::TemperatureTable<N> temperature_table(const Record& record, Check check) {
   if (record.lines.empty()) fail(record, "data line missing");
-  if (record.lines.size() > 1) {
-    fail(record, record.lines[1], "temperature-dependent material data is not supported");
+  material::TemperatureTable<N> table;
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, N, N + 1);
+    typename material::TemperatureTable<N>::Row row;
+    for (std::size_t i = 0; i < N; ++i) row[i] = real_field(record, line, i);
+    const Real temperature = real_field_or(record, line, N, 0);
+    if (!table.empty() && !(temperature > table.temperatures.back()))
+      fail(record, line, "temperatures must increase from line to line (a table by temperature)");
+    check(line, row);
+    table.add(temperature, row);
   }
-  const DataLine& line = record.lines.front();
-  require_field_count(record, line, n_values, n_values + 1);
-  if (line.fields.size() > n_values) (void)real_field(record, line, n_values);  // temperature
-  return line;
+  return table;
 }
 
 }  // namespace
@@ -46,13 +56,10 @@ void handle_elastic(const Record& record, DeckState& state) {
     fail(record, "TYPE=" + type + " is not supported (only TYPE=ISO)");
   }
   model::Material& material = current_material(record, state);
-  const DataLine& line = single_constant_line(record, 2);
-  material.young = real_field(record, line, 0);
-  material.poisson = real_field(record, line, 1);
-  if (material.young <= 0) fail(record, line, "Young's modulus must be positive");
-  if (material.poisson <= -1 || material.poisson >= 0.5) {
-    fail(record, line, "Poisson's ratio must lie in (-1, 0.5)");
-  }
+  material.elastic = temperature_table<2>(record, [&](const DataLine& line, const auto& row) {
+    if (!(row[0] > 0)) fail(record, line, "Young's modulus must be positive");
+    if (!(row[1] > -1 && row[1] < 0.5)) fail(record, line, "Poisson's ratio must lie in (-1, 0.5)");
+  });
 }
 
 void handle_plastic(const Record& record, DeckState& state) {
@@ -62,33 +69,48 @@ void handle_plastic(const Record& record, DeckState& state) {
     fail(record, "HARDENING=" + hardening + " is not supported yet (only ISOTROPIC)");
   model::Material& material = current_material(record, state);
   require_line_count(record, 1, 10000);
-  std::optional<Real> temperature;
+  // One curve per temperature (the third column, 0 when empty), its lines together.
+  material::HardeningCurves curves;
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 2, 3);
-    require_one_temperature(record, line, 2, temperature, "temperature-dependent hardening");
     const Real stress = real_field(record, line, 0), strain = real_field(record, line, 1);
+    const Real temperature = real_field_or(record, line, 2, 0);
     if (!(stress >= 0)) fail(record, line, "the yield stress must not be negative");
-    if (material.plastic.empty() ? strain != 0 : !(strain > material.plastic.back().second))
-      fail(record, line, material.plastic.empty()
-                             ? "the first row must be at zero plastic strain (initial yield)"
+    const bool new_curve = curves.empty() || temperature != curves.temperatures.back();
+    if (new_curve && !curves.empty() && !(temperature > curves.temperatures.back()))
+      fail(record, line, "temperatures must increase from curve to curve (one curve per "
+                         "temperature, its lines together)");
+    if (new_curve ? strain != 0 : !(strain > curves.curves.back().points.back().second))
+      fail(record, line, new_curve
+                             ? "the first row of a curve must be at zero plastic strain (initial "
+                               "yield)"
                              : "plastic strains must increase from row to row");
-    // The return mapping needs 3G + H > 0: a curve that softens faster has no unique answer.
-    if (!material.plastic.empty() && material.young > 0) {
-      const auto [s0, e0] = material.plastic.back();
-      const Real shear = material.young / (2 * (1 + material.poisson));
+    if (new_curve) {
+      curves.temperatures.push_back(temperature);
+      curves.curves.emplace_back();
+    }
+    std::vector<std::pair<Real, Real>>& points = curves.curves.back().points;
+    // The return mapping needs 3G + H > 0: a curve that softens faster has no unique answer
+    // (G the smallest shear modulus of a temperature table).
+    if (!points.empty() && !material.elastic.empty()) {
+      const auto [s0, e0] = points.back();
+      Real shear = std::numeric_limits<Real>::infinity();
+      for (const auto& [young, poisson] : material.elastic.rows)
+        shear = std::min(shear, young / (2 * (1 + poisson)));
       if (!((stress - s0) / (strain - e0) > -3 * shear))
         fail(record, line, "the curve softens faster than -3G (G the shear modulus of *ELASTIC)");
     }
-    material.plastic.emplace_back(stress, strain);
+    points.emplace_back(stress, strain);
   }
+  material.plastic = std::move(curves);
 }
 
 void handle_density(const Record& record, DeckState& state) {
   check_params(record, {});
   model::Material& material = current_material(record, state);
-  const DataLine& line = single_constant_line(record, 1);
-  material.density = real_field(record, line, 0);
-  if (*material.density <= 0) fail(record, line, "density must be positive");
+  material.density = temperature_table<1>(record, [&](const DataLine& line, const auto& row) {
+    if (!(row[0] > 0)) fail(record, line, "density must be positive");
+  });
 }
 
 void handle_expansion(const Record& record, DeckState& state) {
@@ -101,8 +123,7 @@ void handle_expansion(const Record& record, DeckState& state) {
     if (!value) fail(record, "ZERO=" + zero->value + " is not a number");
     material.expansion_zero = *value;
   }
-  const DataLine& line = single_constant_line(record, 1);
-  material.expansion = real_field(record, line, 0);
+  material.expansion = temperature_table<1>(record, [](const DataLine&, const auto&) {});
 }
 
 void handle_solid_section(const Record& record, DeckState& state) {

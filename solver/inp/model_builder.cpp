@@ -214,7 +214,7 @@ void assign_sections(DeckState& state) {
                                                         " is not defined");
     }
     const model::Material& mat = model.materials[static_cast<std::size_t>(material->second)];
-    if (mat.young <= 0) {
+    if (mat.elastic.empty()) {
       throw InputError(raw.where, "*SOLID SECTION",
                        "material " + raw.material + " has no *ELASTIC constants");
     }
@@ -246,7 +246,8 @@ void require_sections(const DeckState& state) {
   }
 }
 
-/// GRAV and CENTRIF act on the mass: every loaded element's material needs a *DENSITY.
+/// GRAV and CENTRIF act on the mass: every loaded element's material needs a *DENSITY (one
+/// value: the body forces do not evaluate it at the points' temperatures).
 void require_densities(const DeckState& state) {
   const model::Model& model = state.model;
   for (const model::Step& step : model.steps) {
@@ -255,10 +256,18 @@ void require_densities(const DeckState& state) {
         const model::Element& element = model.mesh.elements[static_cast<std::size_t>(e)];
         const model::Material& material =
             model.materials[static_cast<std::size_t>(model.sections[element.section].material)];
-        if (material.density) continue;
-        throw InputError(load.where, "*DLOAD",
-                         "element " + std::to_string(element.id) + " has material " +
-                             material.name + " without *DENSITY; GRAV and CENTRIF need it");
+        if (material.density.empty()) {
+          throw InputError(load.where, "*DLOAD",
+                           "element " + std::to_string(element.id) + " has material " +
+                               material.name + " without *DENSITY; GRAV and CENTRIF need it");
+        }
+        if (material.density.rows.size() > 1) {
+          throw InputError(load.where, "*DLOAD",
+                           "material " + material.name + " of element " +
+                               std::to_string(element.id) +
+                               " has a temperature-dependent *DENSITY: GRAV and CENTRIF take a "
+                               "constant density only");
+        }
       }
     }
   }

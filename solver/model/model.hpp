@@ -12,6 +12,8 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "material/hardening_curves.hpp"
+#include "material/temperature_table.hpp"
 #include "model/contact.hpp"
 #include "model/solution_controls.hpp"
 #include "model/tie.hpp"
@@ -73,13 +75,13 @@ struct Surface {
 
 struct Material {
   std::string name;
-  Real young = 0, poisson = 0;    ///< *ELASTIC, isotropic
-  std::optional<Real> density;    ///< *DENSITY
-  std::optional<Real> expansion;  ///< *EXPANSION, isotropic secant coefficient
-  Real expansion_zero = 0;        ///< *EXPANSION, ZERO= reference temperature
-  /// *PLASTIC (isotropic hardening): (yield stress, equivalent plastic strain) rows, the first
-  /// at zero plastic strain; empty for an elastic material.
-  std::vector<std::pair<Real, Real>> plastic;
+  /// *ELASTIC, isotropic: (E, nu) per temperature (one row: constant); empty: not given
+  material::TemperatureTable<2> elastic;
+  material::TemperatureTable<1> density;    ///< *DENSITY per temperature
+  material::TemperatureTable<1> expansion;  ///< *EXPANSION, isotropic secant coefficient
+  Real expansion_zero = 0;                  ///< *EXPANSION, ZERO= reference temperature
+  /// *PLASTIC (isotropic hardening): one curve per temperature; empty for an elastic material.
+  material::HardeningCurves plastic;
   SourceLoc where;
 };
 

@@ -11,7 +11,7 @@ the FIRST check a deck breaks is its exclusion reason:
       (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
       - no parameter in FORBIDDEN_PARAMETERS (USER) on any keyword;
-      - *ELASTIC and *EXPANSION: TYPE= absent or ISO, exactly one data line (no table);
+      - *ELASTIC and *EXPANSION: TYPE= absent or ISO (temperature tables admitted);
       - *SOLID SECTION: no ORIENTATION=;
       - *INITIAL CONDITIONS: TYPE=TEMPERATURE only;
       - *BOUNDARY: first and last dof within 1-3; *CLOAD: dof within 1-3;
@@ -24,8 +24,7 @@ the FIRST check a deck breaks is its exclusion reason:
 
 The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same rule except
 that it requires a *STEP with NLGEOM instead of forbidding it, and admits *PLASTIC with
-isotropic hardening: HARDENING= absent or ISOTROPIC, one hardening curve (no temperature
-column, or the same temperature on every line). The linear set keeps *PLASTIC out: ccx
+isotropic hardening: HARDENING= absent or ISOTROPIC (curves by temperature admitted). The linear set keeps *PLASTIC out: ccx
 switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
 whatever its *STEP says.
 
@@ -251,16 +250,11 @@ def _contact_limit(keyword, params, data):
     return None
 
 
-def plastic_exclusion(params, data):
-    """Why a *PLASTIC record is outside the nonlinear set, or None: isotropic hardening with a
-    single curve only."""
+def plastic_exclusion(params):
+    """Why a *PLASTIC record is outside the nonlinear set, or None: isotropic hardening only."""
     hardening = params.get("HARDENING", "ISOTROPIC").upper()
     if hardening != "ISOTROPIC":
         return f"*PLASTIC, HARDENING={hardening}"
-    temperatures = {fields[2] for fields in ([f.strip() for f in line.split(",")] for line in data)
-                    if len(fields) > 2 and fields[2]}
-    if len(temperatures) > 1:
-        return "*PLASTIC with temperature-dependent curves"
     return None
 
 
@@ -292,7 +286,7 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
                 return "C3D8I in the contact set"
             continue
         if keyword == "PLASTIC" and nlgeom:  # (b), nonlinear set only
-            reason = plastic_exclusion(params, data)
+            reason = plastic_exclusion(params)
             if reason:
                 return reason
             continue
@@ -316,8 +310,6 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
         if keyword in ("ELASTIC", "EXPANSION"):
             if params.get("TYPE", "ISO").upper() not in ("ISO", "ISOTROPIC"):
                 return f"*{keyword}, TYPE={params['TYPE'].upper()}"
-            if len(data) != 1:
-                return f"*{keyword} with {len(data)} data lines (table)"
         elif keyword == "SOLID SECTION" and "ORIENTATION" in params:
             return "*SOLID SECTION, ORIENTATION"
         elif keyword == "INITIAL CONDITIONS" and params.get("TYPE", "").upper() != "TEMPERATURE":

@@ -239,7 +239,7 @@ TEST(ApplyTies, ASchemeTiesThroughATiedContactPairInsteadOfEquations) {
   ASSERT_EQ(m.interactions.size(), interactions + 1);
   const model::SurfaceInteraction& tied = m.interactions.at(static_cast<std::size_t>(pair.interaction));
   EXPECT_EQ(tied.behavior.law, model::SurfaceBehavior::Law::Tied);
-  const Real k = 50 * m.materials.front().young;
+  const Real k = 50 * m.materials.front().elastic.rows.front()[0];
   EXPECT_DOUBLE_EQ(tied.behavior.stiffness, k);
   for (const model::Step& step : m.steps) {  // in force in every step
     ASSERT_EQ(step.interaction_behavior.size(), m.interactions.size());

@@ -86,7 +86,7 @@ inline MatX assemble(const Mesh& m, const LinearElastic& mat) {
   MatX K = MatX::Zero(n, n);
   MatX Ke;
   for (const auto& conn : m.elements) {
-    linear_stiffness(m.type, element_coordinates(m, conn), mat, Ke);
+    linear_stiffness(m.type, element_coordinates(m, conn), mat, VecX(), Ke);
     for (std::size_t a = 0; a < conn.size(); ++a)
       for (std::size_t b = 0; b < conn.size(); ++b)
         K.block<3, 3>(3 * conn[a], 3 * conn[b]) += Ke.block<3, 3>(3 * a, 3 * b);

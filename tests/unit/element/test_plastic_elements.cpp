@@ -76,7 +76,7 @@ TEST_P(PlasticElements, ElasticLimitIsTheLinearStiffness) {
   const MatX3 x = X();
   const States s = virgin(type());
   MatX K;
-  linear_stiffness(type(), x, kMat, K);
+  linear_stiffness(type(), x, kMat, VecX(), K);
   MatX K_nlgeom = K;
   if (type() == ElementType::C3D8R) {
     // ccx scales a *PLASTIC material's hourglass stiffness with C_1111 (lambda + 2 mu at

@@ -29,7 +29,7 @@ MatX rigid_modes(const MatX3& X) {
 TEST_P(SolidKernel, StiffnessSymmetricWithExactlySixZeroModes) {
   const MatX3 X = test::distorted_coordinates(topo());
   MatX K;
-  linear_stiffness(type(), X, test::test_material(), K);
+  linear_stiffness(type(), X, test::test_material(), VecX(), K);
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-10 * K.cwiseAbs().maxCoeff());
   EXPECT_LT((K * rigid_modes(X)).cwiseAbs().maxCoeff(), 1e-9 * K.cwiseAbs().maxCoeff());
   const VecX ev = Eigen::SelfAdjointEigenSolver<MatX>(K).eigenvalues();
@@ -44,7 +44,7 @@ TEST_P(SolidKernel, InternalForceAndEnergyConsistentWithStiffness) {
   const MatX3 X = test::distorted_coordinates(topo());
   const LinearElastic mat = test::test_material();
   MatX K;
-  linear_stiffness(type(), X, mat, K);
+  linear_stiffness(type(), X, mat, VecX(), K);
   std::mt19937 rng(5);
   std::uniform_real_distribution<Real> U(-1e-3, 1e-3);
   MatX3 u(X.rows(), 3);
@@ -91,7 +91,7 @@ TEST_P(SolidKernel, FreeThermalExpansionIsStressFree) {
   const MatX3 X = test::distorted_coordinates(topo());
   const LinearElastic mat = test::test_material();
   MatX K;
-  linear_stiffness(type(), X, mat, K);
+  linear_stiffness(type(), X, mat, VecX(), K);
   const VecX dT = VecX::Constant(X.rows(), 80.0);
   VecX f;
   thermal_load(type(), X, mat, dT, f);
@@ -217,7 +217,7 @@ TEST(SolidBending, IncompatibleModesAreExactInPureBendingOfAParallelogram) {
     u.row(a) << -k * x * y, 0.5 * k * (x * x + nu * (y * y - z * z)), nu * k * y * z;
   }
   IpResults r;
-  recover(ElementType::C3D8I, X, {E, nu, 0.0}, u, VecX(), r);
+  recover(ElementType::C3D8I, X, LinearElastic{E, nu, 0.0}, u, VecX(), r);
   const auto rule = volume_rule(ElementType::C3D8I);
   for (int p = 0; p < 8; ++p) {
     const Vec3 x = M * rule[p].xi;

@@ -31,7 +31,7 @@ class TotalLagrangian : public ::testing::TestWithParam<ElementType> {
 
 TEST_P(TotalLagrangian, TangentAtRestIsTheLinearStiffness) {
   MatX K;
-  linear_stiffness(type(), X(), mat(), K);
+  linear_stiffness(type(), X(), mat(), VecX(), K);
   NlgeomResult r;
   nlgeom_element(type(), X(), mat(), MatX3::Zero(X().rows(), 3), VecX(), true, r);
   EXPECT_LT((r.tangent - K).norm(), 1e-10 * K.norm());
@@ -72,7 +72,7 @@ TEST_P(TotalLagrangian, FreeThermalExpansionByOnePlusAlphaDTIsStressFree) {
   const Real a = 0.1;
   const VecX dT = VecX::Constant(x.rows(), 100.0);
   NlgeomResult r;
-  nlgeom_element(type(), x, {1000.0, 0.3, a / 100}, a * x, dT, true, r);
+  nlgeom_element(type(), x, LinearElastic{1000.0, 0.3, a / 100}, a * x, dT, true, r);
   EXPECT_LT(r.internal_force.norm(), 1e-10 * 1000);
   EXPECT_LT(r.cauchy.cwiseAbs().maxCoeff(), 1e-10 * 1000);
   EXPECT_NEAR(r.green_lagrange(0, 0), a + a * a / 2, 1e-12);
@@ -103,7 +103,7 @@ TEST(TotalLagrangianCube, UniaxialStretchGivesTheClosedFormCauchyStress) {
   for (int a = 0; a < 8; ++a)
     u.row(a) << (stretch - 1) * X(a, 0), (lateral - 1) * X(a, 1), (lateral - 1) * X(a, 2);
   NlgeomResult r;
-  nlgeom_element(ElementType::C3D8, X, {1000.0, nu, 0.0}, u, VecX(), false, r);
+  nlgeom_element(ElementType::C3D8, X, LinearElastic{1000.0, nu, 0.0}, u, VecX(), false, r);
   const Real S11 = 1000 * E11, J = stretch * lateral * lateral;
   for (Index k = 0; k < 8; ++k) {
     EXPECT_NEAR(r.cauchy(k, 0), stretch * stretch * S11 / J, 1e-9 * S11);
@@ -117,7 +117,7 @@ TEST(TotalLagrangianCube, ConstrainedHeatingGivesCcxsStress) {
   // prints -9.5 in every direction, S = 3K E(0.9 * 1) = 100 * (0.81 - 1) / 2.
   const MatX3 X = test::reference_coordinates(Topology::Hex8);
   NlgeomResult r;
-  nlgeom_element(ElementType::C3D8, X, {100.0, 0.0, 1e-3}, MatX3::Zero(8, 3),
+  nlgeom_element(ElementType::C3D8, X, LinearElastic{100.0, 0.0, 1e-3}, MatX3::Zero(8, 3),
                  VecX::Constant(8, 100.0), false, r);
   for (Index k = 0; k < 8; ++k)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.cauchy(k, c), -9.5, 1e-12);

@@ -23,4 +23,7 @@ std::vector<BadDeck> tie_bad_decks();
 /// The *TRANSFORM cases (test_transform.cpp).
 std::vector<BadDeck> transform_bad_decks();
 
+/// The material cards' cases (test_material.cpp).
+std::vector<BadDeck> material_bad_decks();
+
 }  // namespace kontakt::inp::test

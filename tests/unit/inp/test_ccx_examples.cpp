@@ -89,14 +89,8 @@ bool supported_card(const std::string& keyword, const std::string& card) {
   return true;
 }
 
-/// Data lines the reader rejects on purpose: temperature tables, DLOADs other than pressures and
-/// GRAV/CENTRIF.
-bool supported_data(const std::string& keyword, const std::string& data, int& lines_in_card) {
-  ++lines_in_card;
-  if ((keyword == "ELASTIC" || keyword == "DENSITY" || keyword == "EXPANSION") &&
-      lines_in_card > 1) {
-    return false;
-  }
+/// Data lines the reader rejects on purpose: DLOADs other than pressures and GRAV/CENTRIF.
+bool supported_data(const std::string& keyword, const std::string& data) {
   if (keyword == "DLOAD") {
     const auto comma = data.find(',');
     const std::string label = data.substr(comma + 1, data.find(',', comma + 1) - comma - 1);
@@ -110,17 +104,15 @@ bool supported_data(const std::string& keyword, const std::string& data, int& li
 bool qualifies(const std::string& text) {
   std::istringstream lines(text);
   std::string line, keyword;
-  int lines_in_card = 0;
   while (std::getline(lines, line)) {
     const std::string compact = upper_no_blanks(line);
     if (compact.empty() || compact.starts_with("**")) continue;
     if (compact[0] != '*') {
-      if (!supported_data(keyword, compact, lines_in_card)) return false;
+      if (!supported_data(keyword, compact)) return false;
       continue;
     }
     const std::string card = compact.substr(1);
     keyword = card.substr(0, card.find(','));
-    lines_in_card = 0;
     if (!supported_card(keyword, card)) return false;
   }
   return true;

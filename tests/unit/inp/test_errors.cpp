@@ -49,9 +49,6 @@ std::vector<BadDeck> bad_decks() {
        "WOOD is not defined"},
       {"orientation", model_plus("*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL, ORIENTATION=O\n"),
        27, "*SOLID SECTION", "ORIENTATION"},
-      {"temperature dependent elastic",
-       model_plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3, 20.\n2., .3, 100.\n"), 30, "*ELASTIC",
-       "temperature-dependent"},
       {"elastic without material", "*ELASTIC\n1., .3\n", 1, "*ELASTIC", "*MATERIAL"},
       {"anisotropic elastic", model_plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ORTHO\n1\n"), 28,
        "*ELASTIC", "TYPE=ORTHO"},
@@ -68,6 +65,11 @@ std::vector<BadDeck> bad_decks() {
       {"gravity without density",
        model_plus(step + "*DLOAD\nEALL, GRAV, 9.81, 0, 0, -1\n*END STEP\n"), 30, "*DLOAD",
        "material STEEL without *DENSITY"},
+      {"gravity with a density table",
+       model_plus("*MATERIAL, NAME=HOT\n*ELASTIC\n1., .3\n*DENSITY\n7e-9, 20.\n8e-9, 500.\n"
+                  "*SOLID SECTION, ELSET=EALL, MATERIAL=HOT\n" + step +
+                  "*DLOAD\nEALL, GRAV, 9.81, 0, 0, -1\n*END STEP\n"),
+       37, "*DLOAD", "temperature-dependent *DENSITY"},
       {"gravity without direction", model_plus(step + "*DLOAD\nEALL, GRAV, 9.81\n*END STEP\n"),
        30, "*DLOAD", "expected at least 6 field(s), got 3"},
       {"gravity zero direction",
@@ -158,6 +160,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_
                          case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTransform, inpErrors,
                          ::testing::ValuesIn(test::transform_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedMaterial, inpErrors,
+                         ::testing::ValuesIn(test::material_bad_decks()), case_name);
 
 }  // namespace
 }  // namespace kontakt::inp

@@ -33,9 +33,10 @@ TEST(inpMesh, NodesElementsMaterialSection) {
   EXPECT_EQ(e2.section, 0);
   ASSERT_EQ(m.materials.size(), 1u);
   EXPECT_EQ(m.materials[0].name, "STEEL");
-  EXPECT_DOUBLE_EQ(m.materials[0].young, 210000.0);
-  EXPECT_DOUBLE_EQ(m.materials[0].poisson, 0.3);
-  EXPECT_FALSE(m.materials[0].density);
+  ASSERT_EQ(m.materials[0].elastic.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.materials[0].elastic.rows[0][0], 210000.0);
+  EXPECT_DOUBLE_EQ(m.materials[0].elastic.rows[0][1], 0.3);
+  EXPECT_TRUE(m.materials[0].density.empty());
   ASSERT_EQ(m.sections.size(), 1u);
   EXPECT_EQ(m.sections[0].elset, "EALL");
   EXPECT_EQ(m.sections[0].material, 0);
@@ -53,8 +54,8 @@ TEST(inpMesh, DensityAndExpansion) {
   ASSERT_EQ(m.materials.size(), 2u);
   const model::Material& alu = m.materials[1];
   EXPECT_EQ(alu.name, "ALU");
-  EXPECT_DOUBLE_EQ(*alu.density, 2.7e-9);
-  EXPECT_DOUBLE_EQ(*alu.expansion, 2.3e-5);
+  EXPECT_DOUBLE_EQ(alu.density.at(20)[0], 2.7e-9);
+  EXPECT_DOUBLE_EQ(alu.expansion.at(20)[0], 2.3e-5);
   EXPECT_DOUBLE_EQ(alu.expansion_zero, 20.0);
 }
 

@@ -334,9 +334,11 @@ TEST(inpMaterial, PlasticTableIsReadAndChecked) {
     return deck;
   };
   const model::Model m = read_deck_text(with_plastic("\n250., 0.\n300., 0.05"));
-  ASSERT_EQ(m.materials[0].plastic.size(), 2u);
-  EXPECT_DOUBLE_EQ(m.materials[0].plastic[1].first, 300.0);
-  EXPECT_DOUBLE_EQ(m.materials[0].plastic[1].second, 0.05);
+  ASSERT_EQ(m.materials[0].plastic.curves.size(), 1u);
+  const auto& curve = m.materials[0].plastic.curves[0].points;
+  ASSERT_EQ(curve.size(), 2u);
+  EXPECT_DOUBLE_EQ(curve[1].first, 300.0);
+  EXPECT_DOUBLE_EQ(curve[1].second, 0.05);
   for (const std::string& bad : {std::string("\n250., 0.01"), std::string("\n250., 0.\n260., 0."),
                                  std::string(", HARDENING=KINEMATIC\n250., 0."),
                                  std::string("\n250., 0., 20.\n260., 0.1, 100."),
