@@ -44,6 +44,7 @@ struct RawSection {
   std::string elset;
   std::string material;
   SourceLoc where;
+  Real thickness = 1;
 };
 
 /// Where the cards of a *SURFACE INTERACTION block were, for the end-of-deck resolution
