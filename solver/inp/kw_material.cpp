@@ -107,7 +107,14 @@ void handle_expansion(const Record& record, DeckState& state) {
 
 void handle_solid_section(const Record& record, DeckState& state) {
   if (has_param(record, "ORIENTATION")) fail(record, "ORIENTATION= is not supported");
-  check_params(record, {"ELSET", "MATERIAL"});
+  check_params(record, {"ELSET", "MATERIAL", "OFFSET"});
+  // OFFSET= moves plane elements' layer off the z = 0 plane, in thicknesses (ccx).
+  Real offset = 0;
+  if (const auto* param = find_param(record, "OFFSET")) {
+    const std::optional<Real> value = parse_real(param->value);
+    if (!value) fail(record, "OFFSET=" + param->value + " is not a number");
+    offset = *value;
+  }
   // The data line's first field is the thickness of plane stress / strain elements (ccx: a
   // value <= 0 or none means 1); solids and axisymmetric elements do not use it.
   if (record.lines.size() > 1) fail(record, record.lines[1], "unexpected data line");
@@ -118,7 +125,7 @@ void handle_solid_section(const Record& record, DeckState& state) {
   }
   const std::string elset = remove_blanks(to_upper(required_value(record, "ELSET")));
   const std::string material = remove_blanks(to_upper(required_value(record, "MATERIAL")));
-  state.sections.push_back(RawSection{elset, material, record.where, thickness});
+  state.sections.push_back(RawSection{elset, material, record.where, thickness, offset});
 }
 
 }  // namespace kontakt::inp

@@ -215,7 +215,7 @@ void assign_sections(DeckState& state) {
     }
     const int section = static_cast<int>(model.sections.size());
     model.sections.push_back(
-        model::SolidSection{raw.elset, material->second, raw.where, raw.thickness});
+        model::SolidSection{raw.elset, material->second, raw.where, raw.thickness, raw.offset});
     for (int e : elset->second.elements) {
       model::Element& element = model.mesh.elements[static_cast<std::size_t>(e)];
       if (element.section >= 0) {

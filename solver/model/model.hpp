@@ -101,6 +101,7 @@ struct SolidSection {
   int material = -1;              ///< index into Model::materials
   SourceLoc where;
   Real thickness = 1;             ///< data line of plane stress / strain elements (ccx default 1)
+  Real offset = 0;                ///< OFFSET=: their mid-plane at z = -offset * thickness
 };
 
 struct Amplitude {

@@ -17,9 +17,9 @@ struct Copies {
   bool constrained = false;
 };
 
-/// 2D nodes expand per (node, kind, thickness): elements of different kinds or thicknesses
-/// that share a node get their own copies, each group tied to the node.
-using GroupKey = std::tuple<int, Planar, Real>;
+/// 2D nodes expand per (node, kind, thickness, offset): elements of different kinds or
+/// sections that share a node get their own copies, each group tied to the node.
+using GroupKey = std::tuple<int, Planar, Real, Real>;
 
 std::string label_of(const Model& model, int node) {
   return std::to_string(model.mesh.node_ids[static_cast<std::size_t>(node)]);
@@ -117,8 +117,11 @@ class Expander {
     return index;
   }
 
-  Copies& copies_of(int node, Planar planar, Real thickness, Real normal, bool with_middle) {
-    Copies& c = groups_[GroupKey{node, planar, planar == Planar::Axisymmetric ? 0 : thickness}];
+  Copies& copies_of(int node, Planar planar, const SolidSection& section, Real normal,
+                    bool with_middle) {
+    const bool axisymmetric = planar == Planar::Axisymmetric;  // no thickness, no offset
+    const Real t = axisymmetric ? 0 : section.thickness, offset = axisymmetric ? 0 : section.offset;
+    Copies& c = groups_[GroupKey{node, planar, t, offset}];
     const Vec3 x = model_.mesh.coords.row(node).transpose();
     if (c.front < 0) {
       if (planar == Planar::Axisymmetric) {
@@ -126,11 +129,11 @@ class Expander {
         c.front = add_node(node, Vec3(r * cs, x.y(), -r * sn));
         c.back = add_node(node, Vec3(r * cs, x.y(), r * sn));
       } else {
-        c.front = add_node(node, Vec3(x.x(), x.y(), -normal * thickness / 2));
-        c.back = add_node(node, Vec3(x.x(), x.y(), normal * thickness / 2));
+        c.front = add_node(node, Vec3(x.x(), x.y(), -normal * t * (0.5 + offset)));
+        c.back = add_node(node, Vec3(x.x(), x.y(), normal * t * (0.5 - offset)));
       }
     }
-    if (with_middle && c.middle < 0) c.middle = add_node(node, x);
+    if (with_middle && c.middle < 0) c.middle = add_node(node, Vec3(x.x(), x.y(), -normal * t * offset));
     return c;
   }
 
@@ -159,11 +162,11 @@ class Expander {
                   " is numbered clockwise in the (r, z) = (x, y) plane; ccx needs "
                   "counter-clockwise");
     const Real normal = area2 > 0 ? 1 : -1;
-    const Real thickness = model_.sections[static_cast<std::size_t>(el.section)].thickness;
+    const SolidSection& section = model_.sections[static_cast<std::size_t>(el.section)];
 
     std::vector<Copies*> copies(static_cast<std::size_t>(n2d));
     for (int a = 0; a < n2d; ++a) {
-      Copies& c = copies_of(el.nodes[a], el.planar, thickness, normal, quadratic && a < n_corner);
+      Copies& c = copies_of(el.nodes[a], el.planar, section, normal, quadratic && a < n_corner);
       copies[static_cast<std::size_t>(a)] = &c;
     }
     std::vector<int> nodes;
