@@ -120,7 +120,11 @@ class Expander {
   Copies& copies_of(int node, Planar planar, const SolidSection& section, Real normal,
                     bool with_middle) {
     const bool axisymmetric = planar == Planar::Axisymmetric;  // no thickness, no offset
-    const Real t = axisymmetric ? 0 : section.thickness, offset = axisymmetric ? 0 : section.offset;
+    // In a model with axisymmetric elements everything is given for 360 degrees, so ccx
+    // thins plane elements like the loads (measured: thickness / 180).
+    const Real t = axisymmetric ? 0
+                   : section.thickness * (axisymmetric_nodes_.empty() ? 1 : kWedgeLoadFactor);
+    const Real offset = axisymmetric ? 0 : section.offset;
     Copies& c = groups_[GroupKey{node, planar, t, offset}];
     const Vec3 x = model_.mesh.coords.row(node).transpose();
     if (c.front < 0) {
@@ -246,8 +250,10 @@ class Expander {
       std::erase_if(step.boundaries, [&](const Boundary& b) {
         return b.dof == 2 && planar_nodes_.contains(b.node);
       });
-      for (ConcentratedLoad& l : step.cloads)
-        if (axisymmetric_nodes_.contains(l.node)) l.value *= kWedgeLoadFactor;
+      // A model with axisymmetric elements is given for 360 degrees: every load (measured on
+      // the plane stress nodes of such a model too).
+      if (!axisymmetric_nodes_.empty())
+        for (ConcentratedLoad& l : step.cloads) l.value *= kWedgeLoadFactor;
     }
   }
 

@@ -8,9 +8,9 @@
 //                   elements front and back move opposite in z (w_front + w_back = 0);
 //   axisymmetric    a wedge from -1 to +1 degree about the y axis: the copies at +-1 degree
 //                   move radially with the 2D node (u_x = cos u_r, u_z = -+sin u_r).
-// Plane elements are `SolidSection::thickness` thick; axisymmetric loads are given for 360
-// degrees, so the wedge carries 1/180 of every *CLOAD on its nodes, and its reactions are
-// the wedge's, as ccx prints them.
+// Plane elements are `SolidSection::thickness` thick. A model with axisymmetric elements is
+// given for 360 degrees: the wedge carries 1/180 of every *CLOAD, plane elements in such a
+// model are 1/180 as thick, and reactions are the wedge's, as ccx prints them.
 #pragma once
 
 #include <vector>
@@ -28,7 +28,7 @@ inline constexpr Real kWedgeLoadFactor = 1.0 / 180.0;
 
 /// Replaces the 2D elements of `model` by their 3D expansion in place: new nodes (labels after
 /// the largest deck label), constraint equations, faces of surfaces and pressures renumbered
-/// (edge k -> face k + 2), *CLOAD on axisymmetric nodes scaled, temperatures copied to the new
+/// (edge k -> face k + 2), *CLOAD of axisymmetric models scaled, temperatures copied to the new
 /// nodes, and Model::planar_folds filled. `element_where` is the *ELEMENT line of each element
 /// (for messages). Throws InputError for what ccx refuses or Kontakt does not build: a 2D node
 /// off z = 0, a 2D node shared with a solid or carrying a *TRANSFORM or used in a node
