@@ -23,4 +23,7 @@ std::vector<BadDeck> tie_bad_decks();
 /// The *TRANSFORM cases (test_transform.cpp).
 std::vector<BadDeck> transform_bad_decks();
 
+/// The plane stress / strain / axisymmetric cases (test_plane_elements.cpp).
+std::vector<BadDeck> plane_bad_decks();
+
 }  // namespace kontakt::inp::test
