@@ -34,7 +34,7 @@ struct Element {
 /// nodes' displacements and its RF their sum, as ccx reports them.
 struct PlanarFold {
   int node = 0;                   ///< internal index of the deck's 2D node
-  std::vector<int> expanded;      ///< internal indices of its expanded nodes
+  std::vector<int> expanded;      ///< internal indices of all its expanded nodes
   std::vector<Real> weights;      ///< parallel to expanded, summing to 1
 };
 

@@ -271,16 +271,28 @@ class Expander {
     for (Step& step : model_.steps) step.temperatures = extended(step.temperatures);
   }
 
+  /// ccx averages a node's value over its groups (a node shared by plane and axisymmetric
+  /// elements) and sums the forces of all its copies.
   void build_folds() {
-    std::map<int, PlanarFold> folds;
-    for (const auto& [key, c] : groups_) {
-      const int node = std::get<0>(key);
-      if (folds.contains(node)) continue;  // a node in several groups reports its first
-      PlanarFold fold{node, {c.front, c.back}, {0.5, 0.5}};
-      if (c.middle >= 0) fold = PlanarFold{node, {c.front, c.middle, c.back}, {1. / 6, 4. / 6, 1. / 6}};
-      folds.emplace(node, std::move(fold));
+    std::map<int, std::vector<const Copies*>> of_node;
+    for (const auto& [key, c] : groups_) of_node[std::get<0>(key)].push_back(&c);
+    for (const auto& [node, groups] : of_node) {
+      PlanarFold fold{node, {}, {}};
+      const Real share = 1.0 / static_cast<Real>(groups.size());
+      for (const Copies* c : groups) {
+        const bool middle = c->middle >= 0;
+        const Real side = middle ? 1.0 / 6 : 0.5;
+        fold.expanded.push_back(c->front);
+        fold.weights.push_back(share * side);
+        if (middle) {
+          fold.expanded.push_back(c->middle);
+          fold.weights.push_back(share * 4.0 / 6);
+        }
+        fold.expanded.push_back(c->back);
+        fold.weights.push_back(share * side);
+      }
+      model_.planar_folds.push_back(std::move(fold));
     }
-    for (auto& [node, fold] : folds) model_.planar_folds.push_back(std::move(fold));
   }
 };
 

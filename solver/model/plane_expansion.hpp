@@ -36,7 +36,8 @@ inline constexpr Real kWedgeLoadFactor = 1.0 / 180.0;
 void expand_planar_elements(Model& model, const std::vector<SourceLoc>& element_where);
 
 /// The deck's 2D nodes' results from their expanded nodes: U the weighted mean (ccx: front and
-/// back alike, the middle copy 4/6 at quadratic corners), RF the sum of the internal forces.
+/// back alike, the middle copy 4/6 at quadratic corners; the groups of a node shared by plane
+/// and axisymmetric elements averaged), RF the sum of the internal forces of all copies.
 void fold_to_planar_nodes(const std::vector<PlanarFold>& folds, MatX3& U, MatX3& RF);
 
 }  // namespace kontakt::model

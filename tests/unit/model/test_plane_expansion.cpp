@@ -179,8 +179,12 @@ TEST(PlaneExpansion, PlaneElementsOfAnAxisymmetricModelAreThinnedLikeTheLoads) {
   m.mesh.elements.push_back(axi);
   model::expand_planar_elements(m, {kWhere, kWhere});
   EXPECT_NEAR(x_of(m, m.mesh.elements[0].nodes[0]).z(), -0.9 / 2 / 180, 1e-16);
-  // Shared 2D nodes get their own copies per kind of element, both tied to the node.
+  // Shared 2D nodes get their own copies per kind of element, both tied to the node; the
+  // node reports the mean of both groups and the forces of all four copies (ccx).
   EXPECT_EQ(m.n_nodes(), 4 + 8 + 8);
+  ASSERT_EQ(m.planar_folds.size(), 4u);
+  EXPECT_EQ(m.planar_folds[0].expanded.size(), 4u);
+  EXPECT_EQ(m.planar_folds[0].weights, (std::vector<Real>{0.25, 0.25, 0.25, 0.25}));
 }
 
 TEST(PlaneExpansion, FoldReportsTheWeightedMeanAndTheSumOfForces) {
