@@ -14,7 +14,8 @@ namespace {
 /// The copies of one 2D node for one kind of expansion (-1: not created).
 struct Copies {
   int front = -1, middle = -1, back = -1;
-  bool constrained = false;
+  bool constrained = false;        ///< front and back tied to the node
+  bool middle_constrained = false;
 };
 
 /// 2D nodes expand per (node, kind, thickness, offset): elements of different kinds or
@@ -209,8 +210,8 @@ class Expander {
         }
       }
     }
-    if (c.middle >= 0 && !middle_tied_.contains(c.middle)) {
-      middle_tied_.insert(c.middle);
+    if (c.middle >= 0 && !c.middle_constrained) {
+      c.middle_constrained = true;
       equation(e, {{c.middle, 0, 1}, {node, 0, -1}});
       equation(e, {{c.middle, 1, 1}, {node, 1, -1}});
       equation(e, {{c.middle, 2, 1}});
@@ -220,7 +221,6 @@ class Expander {
     if (planar == Planar::PlaneStress && fresh && c.middle < 0 && !quadratic_of(e))
       equation(e, {{c.front, 2, 1}, {c.back, 2, 1}});
   }
-  std::unordered_set<int> middle_tied_;
 
   bool quadratic_of(std::size_t e) const {
     const Element& el = model_.mesh.elements[e];
