@@ -5,6 +5,7 @@
 #include "element/solid_plastic.hpp"
 #include "element/total_lagrangian.hpp"
 #include "element/total_lagrangian_plastic.hpp"
+#include "model/plane_expansion.hpp"
 
 namespace kontakt::analysis {
 
@@ -132,6 +133,7 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
 output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev) {
   output::Frame frame = sized_frame(model, u);
   frame.RF = Eigen::Map<const MatX3>(ev.internal_force.data(), model.n_nodes(), 3);
+  model::fold_to_planar_nodes(model.planar_folds, frame.U, frame.RF);
   bool any_plastic = false;
   for (const auto& o : ev.outputs) any_plastic |= o.peeq.size() > 0;
   if (any_plastic) frame.PEEQ = VecX::Zero(frame.ip_offset.back());

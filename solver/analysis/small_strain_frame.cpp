@@ -2,6 +2,7 @@
 
 #include "analysis/element_access.hpp"
 #include "core/parallel.hpp"
+#include "model/plane_expansion.hpp"
 
 namespace kontakt::analysis {
 
@@ -80,6 +81,7 @@ output::Frame small_strain_frame(const model::Model& model, const VecX& u, const
   for (int e = 0; e < n_el; ++e)
     for (std::size_t a = 0; a < elements[e].nodes.size(); ++a)
       for (int c = 0; c < 3; ++c) frame.RF(elements[e].nodes[a], c) += internal_force[e][3 * a + c];
+  model::fold_to_planar_nodes(model.planar_folds, frame.U, frame.RF);
   average_to_nodes(model, frame);
   return frame;
 }

@@ -46,6 +46,8 @@ struct RawSection {
   std::string elset;
   std::string material;
   SourceLoc where;
+  Real thickness = 1;
+  Real offset = 0;
 };
 
 /// Where the cards of a *SURFACE INTERACTION block were, for the end-of-deck resolution

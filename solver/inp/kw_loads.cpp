@@ -92,7 +92,7 @@ std::vector<FaceKey> pressure_faces(const Record& record, const DataLine& line,
 void check_face_exists(const Record& record, const DataLine& line, const DeckState& state,
                        const FaceKey& face) {
   const model::Element& element = state.model.mesh.elements[static_cast<std::size_t>(face.first)];
-  const ElementName& name = element_name_of(element.type);
+  const ElementName& name = element_name_of(element.type, element.planar);
   if (face.second < 1 || face.second > name.n_faces) {
     fail(record, line, "element " + std::to_string(element.id) + " (" + std::string(name.name) +
                            ") has no face " + std::to_string(face.second));

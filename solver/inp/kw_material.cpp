@@ -128,15 +128,25 @@ void handle_expansion(const Record& record, DeckState& state) {
 
 void handle_solid_section(const Record& record, DeckState& state) {
   if (has_param(record, "ORIENTATION")) fail(record, "ORIENTATION= is not supported");
-  check_params(record, {"ELSET", "MATERIAL"});
-  // A data line (thickness of 2D elements) has no meaning for solids; ccx ignores it too.
+  check_params(record, {"ELSET", "MATERIAL", "OFFSET"});
+  // OFFSET= moves plane elements' layer off the z = 0 plane, in thicknesses (ccx).
+  Real offset = 0;
+  if (const auto* param = find_param(record, "OFFSET")) {
+    const std::optional<Real> value = parse_real(param->value);
+    if (!value) fail(record, "OFFSET=" + param->value + " is not a number");
+    offset = *value;
+  }
+  // The data line's first field is the thickness of plane stress / strain elements (ccx: a
+  // value <= 0 or none means 1); solids and axisymmetric elements do not use it.
   if (record.lines.size() > 1) fail(record, record.lines[1], "unexpected data line");
-  if (!record.lines.empty()) {
-    state.warn(record.lines.front().where, record.keyword, "data line ignored for solids");
+  Real thickness = 1;
+  if (!record.lines.empty() && !record.lines.front().fields.empty()) {
+    const Real given = real_field_or(record, record.lines.front(), 0, 0);
+    if (given > 0) thickness = given;
   }
   const std::string elset = remove_blanks(to_upper(required_value(record, "ELSET")));
   const std::string material = remove_blanks(to_upper(required_value(record, "MATERIAL")));
-  state.sections.push_back(RawSection{elset, material, record.where});
+  state.sections.push_back(RawSection{elset, material, record.where, thickness, offset});
 }
 
 }  // namespace kontakt::inp

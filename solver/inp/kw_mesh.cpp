@@ -116,7 +116,9 @@ void handle_node(const Record& record, DeckState& state) {
   std::size_t ignored = 0;
   const DataLine* first_ignored = nullptr;
   for (const DataLine& line : record.lines) {
-    require_field_count(record, line, 2, std::numeric_limits<std::size_t>::max());
+    // A label alone is a node at the origin: ccx reads missing coordinates as 0
+    // (planestress3.inp's node 1).
+    require_field_count(record, line, 1, std::numeric_limits<std::size_t>::max());
     const int label = int_field(record, line, 0);
     const Vec3 xyz(real_field_or(record, line, 1, 0), real_field_or(record, line, 2, 0),
                    real_field_or(record, line, 3, 0));
@@ -171,7 +173,7 @@ void handle_element(const Record& record, DeckState& state) {
     for (std::size_t n = 0; n < nodes.size(); ++n) nodes[n] = int_field(record, joined, n + 1);
     const auto [it, inserted] = mesh.element_index.try_emplace(label, mesh.elements.size());
     if (!inserted) fail(record, first, "element " + std::to_string(label) + " defined twice");
-    mesh.elements.push_back(model::Element{label, type->type, {}, -1});
+    mesh.elements.push_back(model::Element{label, type->type, {}, -1, type->planar});
     state.element_node_labels.push_back(std::move(nodes));
     const int line_id = state.intern(first.where);
     state.element_line_ids.push_back(line_id);

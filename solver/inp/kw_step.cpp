@@ -9,8 +9,14 @@ namespace kontakt::inp {
 
 void handle_step(const Record& record, DeckState& state) {
   if (has_param(record, "PERTURBATION")) fail(record, "PERTURBATION is not supported");
-  check_params(record, {"NLGEOM", "INC"});
+  check_params(record, {"NLGEOM", "INC", "AMPLITUDE"});
   if (!record.lines.empty()) fail(record, record.lines.front(), "unexpected data line");
+  // AMPLITUDE=RAMP is what a static step does anyway (ccx's default); loads applied at once
+  // (STEP) are not built.
+  if (const Param* amplitude = find_param(record, "AMPLITUDE")) {
+    if (to_upper(amplitude->value) != "RAMP")
+      fail(record, "AMPLITUDE=" + to_upper(amplitude->value) + " is not supported (only RAMP)");
+  }
   StepProgress progress;
   progress.step.where = record.where;
   // ccx: once NLGEOM is selected it stays active in subsequent steps unless switched off.

@@ -6,6 +6,7 @@
 #include "inp/element_names.hpp"
 #include "inp/record_access.hpp"
 #include "inp/tie_builder.hpp"
+#include "model/plane_expansion.hpp"
 
 namespace kontakt::inp {
 
@@ -186,7 +187,8 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
       throw InputError(where, "*SURFACE",
                        "element " + std::to_string(face.element_label) + " is not defined");
     }
-    const ElementName& type = element_name_of(mesh.elements[found->second].type);
+    const model::Element& element = mesh.elements[found->second];
+    const ElementName& type = element_name_of(element.type, element.planar);
     if (face.face > type.n_faces) {
       throw InputError(where, "*SURFACE", "element " + std::to_string(face.element_label) +
                                               " (" + std::string(type.name) + ") has no face S" +
@@ -224,7 +226,8 @@ void assign_sections(DeckState& state) {
                                                         " is not defined");
     }
     const int section = static_cast<int>(model.sections.size());
-    model.sections.push_back(model::SolidSection{raw.elset, material->second, raw.where});
+    model.sections.push_back(
+        model::SolidSection{raw.elset, material->second, raw.where, raw.thickness, raw.offset});
     for (int e : elset->second.elements) {
       model::Element& element = model.mesh.elements[static_cast<std::size_t>(e)];
       if (element.section >= 0) {
@@ -300,6 +303,11 @@ model::Model finish_model(DeckState& state) {
       model.initial_temperatures[node] = value;
     }
   }
+  std::vector<SourceLoc> element_where;
+  element_where.reserve(state.element_line_ids.size());
+  for (int id : state.element_line_ids)
+    element_where.push_back(state.line_locs[static_cast<std::size_t>(id)]);
+  model::expand_planar_elements(model, element_where);
   return std::move(model);
 }
 

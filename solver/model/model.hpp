@@ -20,11 +20,24 @@
 
 namespace kontakt::model {
 
+/// What a 2D element of the deck stands for. ccx (and Kontakt) solve such elements as one layer
+/// of 3D elements with out-of-plane constraints (model/plane_expansion).
+enum class Planar { None, PlaneStress, PlaneStrain, Axisymmetric };
+
 struct Element {
   int id = 0;                     ///< label in the deck
-  element::ElementType type{};
+  element::ElementType type{};    ///< for a 2D element: the 3D type it is expanded into
   std::vector<int> nodes;         ///< internal node indices, ccx local order
   int section = -1;               ///< index into Model::sections
+  Planar planar = Planar::None;   ///< CPS*, CPE*, CAX* as read (kept after the expansion)
+};
+
+/// A node of 2D elements after the expansion: its U is the weighted mean of the expanded
+/// nodes' displacements and its RF their sum, as ccx reports them.
+struct PlanarFold {
+  int node = 0;                   ///< internal index of the deck's 2D node
+  std::vector<int> expanded;      ///< internal indices of all its expanded nodes
+  std::vector<Real> weights;      ///< parallel to expanded, summing to 1
 };
 
 struct Mesh {
@@ -89,6 +102,8 @@ struct SolidSection {
   std::string elset;
   int material = -1;              ///< index into Model::materials
   SourceLoc where;
+  Real thickness = 1;             ///< data line of plane stress / strain elements (ccx default 1)
+  Real offset = 0;                ///< OFFSET=: their mid-plane at z = -offset * thickness
 };
 
 struct Amplitude {
@@ -225,6 +240,8 @@ struct Model {
   /// empty when none were given.
   VecX initial_temperatures;
   std::vector<Step> steps;
+  /// One entry per deck node of 2D elements (model::expand_planar_elements); empty otherwise.
+  std::vector<PlanarFold> planar_folds;
   std::vector<std::string> warnings;  ///< "file:line: keyword: message" for accepted oddities
 
   int n_nodes() const { return static_cast<int>(mesh.node_ids.size()); }

@@ -8,7 +8,8 @@ upper-case with runs of blanks collapsed. The checks run record by record in dec
 the FIRST check a deck breaks is its exclusion reason:
 
   (a) every *ELEMENT has TYPE= one of ELEMENT_TYPES
-      (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R);
+      (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R, and the plane stress, plane
+      strain and axisymmetric CPS/CPE/CAX 3, 4, 4R, 6, 8, 8R);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
       - no parameter in FORBIDDEN_PARAMETERS (USER) on any keyword;
       - *ELASTIC and *EXPANSION: TYPE= absent or ISO (temperature tables admitted);
@@ -46,7 +47,9 @@ CONTACT_KEYWORDS admitted, and:
     by their first four characters as ccx reads them (CDISP, CSTRESS);
   - *FRICTION, *CHANGE FRICTION and *CHANGE SURFACE BEHAVIOR admitted; *MODEL CHANGE stays
     an unsupported keyword (one fixed set of pairs);
-  - the deck has at least one *CONTACT PAIR.
+  - the deck has at least one *CONTACT PAIR;
+  - no *SURFACE, TYPE=NODE in a deck with plane or axisymmetric elements (Kontakt refuses
+    node surfaces on their nodes).
 
 The tie peer set (`tie=True`, run_peer.py --tie): MPC-based tied contact (*TIE). The same
 rule on the derived deck, with NLGEOM allowed (not required), and:
@@ -71,7 +74,8 @@ import sys
 
 DEFAULT_SUITE = "/usr/share/doc/calculix-ccx-test/examples/test"
 
-ELEMENT_TYPES = {"C3D4", "C3D6", "C3D8", "C3D8R", "C3D8I", "C3D10", "C3D15", "C3D20", "C3D20R"}
+ELEMENT_TYPES = {"C3D4", "C3D6", "C3D8", "C3D8R", "C3D8I", "C3D10", "C3D15", "C3D20", "C3D20R"} | {
+    f"{kind}{shape}" for kind in ("CPS", "CPE", "CAX") for shape in ("3", "4", "4R", "6", "8", "8R")}
 SUPPORTED_KEYWORDS = {
     "HEADING", "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "ELASTIC", "DENSITY",
     "EXPANSION", "SOLID SECTION", "INITIAL CONDITIONS", "TEMPERATURE", "BOUNDARY", "CLOAD",
@@ -274,7 +278,7 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
         recs = list(records(path, text=derived_deck(path) if tie or contact else None))
     except (OSError, UnicodeError, ValueError) as e:
         return f"unreadable: {e}"
-    prints, has_nlgeom, pairs, ties = 0, False, 0, 0
+    prints, has_nlgeom, pairs, ties, planar = 0, False, 0, 0, False
     keywords = (SUPPORTED_KEYWORDS | (CONTACT_KEYWORDS if contact else set())
                 | (TIE_KEYWORDS if tie else set()))
     for keyword, params, data in recs:
@@ -284,7 +288,11 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
                 return f"element {etype or '(no TYPE)'}"
             if contact and etype == "C3D8I":
                 return "C3D8I in the contact set"
+            planar |= etype[:3] in ("CPS", "CPE", "CAX")
             continue
+        if (keyword == "SURFACE" and planar
+                and params.get("TYPE", "ELEMENT").upper().replace(" ", "") == "NODE"):
+            return "node surface in a deck with 2D elements"
         if keyword == "PLASTIC" and nlgeom:  # (b), nonlinear set only
             reason = plastic_exclusion(params)
             if reason:

@@ -25,5 +25,7 @@ std::vector<BadDeck> transform_bad_decks();
 
 /// The material cards' cases (test_material.cpp).
 std::vector<BadDeck> material_bad_decks();
+/// The plane stress / strain / axisymmetric cases (test_plane_elements.cpp).
+std::vector<BadDeck> plane_bad_decks();
 
 }  // namespace kontakt::inp::test
