@@ -30,24 +30,14 @@ sys.dont_write_bytecode = True  # keep the source tree clean
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import datfile  # noqa: E402
 import vutil  # noqa: E402
+# The same cylinder and closed form as the 3-D Lame test (plane strain: sigma_zz = 2 nu A).
+from test_lame import AC, E, NU, P, RA, RB, stt_exact, ur_exact  # noqa: E402
 
-E, NU = 210000.0, 0.3
-RA, RB, H = 1.0, 2.0, 0.5
-P = 100.0
-AC = P * RA ** 2 / (RB ** 2 - RA ** 2)
-BC = P * RA ** 2 * RB ** 2 / (RB ** 2 - RA ** 2)
+H = 0.5
 COS1 = math.cos(math.radians(1.0))
 GAUSS3 = (-math.sqrt(0.6), 0.0, math.sqrt(0.6))
 
 LEVELS = {"coarse": ((4, 1), 1e-3, 0.03), "fine": ((8, 2), 1e-4, 0.01)}
-
-
-def ur_exact(r):
-    return r * (1 + NU) / E * ((1 - 2 * NU) * AC + BC / r ** 2)
-
-
-def stt_exact(r):
-    return AC + BC / r ** 2
 
 
 def mesh(nr, ny):
