@@ -81,6 +81,8 @@ class NonlinearStatic {
     Real period = 1;
     VecX u_start, dT_end;
     model::SolutionControls controls;
+    /// Without NLGEOM: the distributed loads of the step and of the previous one (fading out).
+    std::optional<DistributedLoadShapes> loads, previous_loads;
   };
   /// One attempt at an increment: its times, targets and the Newton iterate.
   struct Attempt {
@@ -109,7 +111,11 @@ class NonlinearStatic {
     const model::Step& step = model_.steps[s];
     StepContext sc{.step = &step, .previous = s > 0 ? &model_.steps[s - 1] : nullptr,
                    .number = s + 1, .period = step.procedure.period, .u_start = u_,
-                   .dT_end = temperature_change(model_, step), .controls = {}};
+                   .dT_end = temperature_change(model_, step), .controls = {}, .loads = {}, .previous_loads = {}};
+    if (!step.nlgeom) {
+      sc.loads = distributed_load_shapes(model_, step);
+      if (sc.previous) sc.previous_loads = distributed_load_shapes(model_, *sc.previous);
+    }
     events_.on_event({.kind = Event::Kind::Step, .step = sc.number, .wall_time = wall()});
     if (!step.procedure.data_line_given)
       warn(sc.number, step.where.file + ":" + std::to_string(step.where.line) +
@@ -147,19 +153,23 @@ class NonlinearStatic {
   VecX loads_at(const StepContext& sc, Real t, const VecX& u) const {
     const model::Step& step = *sc.step;
     const Real ramp = t / sc.period, total = total_time_start_ + t;
-    const MatX3 x = step.nlgeom ? MatX3(model_.mesh.coords +
-                                        Eigen::Map<const MatX3>(u.data(), model_.n_nodes(), 3))
-                                : model_.mesh.coords;
-    const VecX u_body = step.nlgeom ? u : VecX::Zero(u.size());  // the mass moves with NLGEOM
-    VecX f = cloads_prev_ * (1 - ramp) + concentrated_forces(model_, step, t, total, ramp) +
-             pressure_forces(model_, step, t, total, ramp, x) +
-             body_forces(model_, step, t, total, ramp, u_body);
-    if (sc.previous) {  // the previous step's distributed loads fade out as this step's take over
-      const model::Step& previous = *sc.previous;
-      const Real end = previous.procedure.period;
-      f += pressure_forces(model_, previous, end, total_time_start_, 1 - ramp, x) +
-           body_forces(model_, previous, end, total_time_start_, 1 - ramp, u_body);
+    VecX f = cloads_prev_ * (1 - ramp) + concentrated_forces(model_, step, t, total, ramp);
+    // the previous step's distributed loads fade out as this step's take over
+    const model::Step* previous = sc.previous;
+    const Real previous_end = previous ? previous->procedure.period : 0;
+    if (sc.loads) {
+      f += distributed_forces(model_, *sc.loads, t, total, ramp);
+      if (previous)
+        f += distributed_forces(model_, *sc.previous_loads, previous_end, total_time_start_,
+                                1 - ramp);
+      return f;
     }
+    const MatX3 x = model_.mesh.coords + Eigen::Map<const MatX3>(u.data(), model_.n_nodes(), 3);
+    f += pressure_forces(model_, step, t, total, ramp, x) +
+         body_forces(model_, step, t, total, ramp, u);  // the mass moves with NLGEOM
+    if (previous)
+      f += pressure_forces(model_, *previous, previous_end, total_time_start_, 1 - ramp, x) +
+           body_forces(model_, *previous, previous_end, total_time_start_, 1 - ramp, u);
     return f;
   }
 

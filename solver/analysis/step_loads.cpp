@@ -33,22 +33,41 @@ VecX concentrated_forces(const model::Model& model, const model::Step& step, Rea
   return f;
 }
 
+namespace {
+/// Adds one face pressure's nodal forces at the value `p` on the nodal positions `x` to `f`.
+void add_pressure(const model::Model& model, const model::PressureLoad& load, const MatX3& x, Real p,
+                  VecX& f) {
+  const auto& el = model.mesh.elements[load.face.element];
+  MatX3 xe(el.nodes.size(), 3);
+  for (std::size_t a = 0; a < el.nodes.size(); ++a) xe.row(a) = x.row(el.nodes[a]);
+  VecX fe;
+  naming_element(el, [&] { element::pressure_load(el.type, load.face.face, xe, p, fe); });
+  for (std::size_t a = 0; a < el.nodes.size(); ++a)
+    f.segment<3>(3 * el.nodes[a]) += fe.segment<3>(3 * static_cast<Index>(a));
+}
+
+/// Adds one body load's nodal forces under the acceleration `b` with the nodes displaced by `u`.
+void add_body_load(const model::Model& model, const model::BodyLoad& load,
+                   const element::BodyAcceleration& b, const VecX& u, VecX& f) {
+  for (int e : load.elements) {
+    const auto& el = model.mesh.elements[static_cast<std::size_t>(e)];
+    VecX fe;
+    naming_element(el, [&] {
+      element::body_load(el.type, element_coords(model, el), element_displacements(el, u),
+                         element_material_def(model, el).density.rows.front()[0], b, fe);
+    });
+    for (std::size_t a = 0; a < el.nodes.size(); ++a)
+      f.segment<3>(3 * el.nodes[a]) += fe.segment<3>(3 * static_cast<Index>(a));
+  }
+}
+}  // namespace
+
 VecX pressure_forces(const model::Model& model, const model::Step& step, Real step_time,
                      Real total_time, Real ramp, const MatX3& x) {
   VecX f = VecX::Zero(3 * model.n_nodes());
-  for (const auto& load : step.pressures) {
-    const auto& el = model.mesh.elements[load.face.element];
-    MatX3 xe(el.nodes.size(), 3);
-    for (std::size_t a = 0; a < el.nodes.size(); ++a) xe.row(a) = x.row(el.nodes[a]);
-    VecX fe;
-    naming_element(el, [&] {
-      element::pressure_load(
-          el.type, load.face.face, xe,
-          load.value * load_factor(model, load.amplitude, step_time, total_time, ramp), fe);
-    });
-    for (std::size_t a = 0; a < el.nodes.size(); ++a)
-      for (int c = 0; c < 3; ++c) f[3 * el.nodes[a] + c] += fe[3 * a + c];
-  }
+  for (const auto& load : step.pressures)
+    add_pressure(model, load, x,
+                 load.value * load_factor(model, load.amplitude, step_time, total_time, ramp), f);
   return f;
 }
 
@@ -65,20 +84,35 @@ element::BodyAcceleration body_acceleration(const model::Model& model, const mod
 VecX body_forces(const model::Model& model, const model::Step& step, Real step_time,
                  Real total_time, Real ramp, const VecX& u) {
   VecX f = VecX::Zero(3 * model.n_nodes());
+  for (const auto& load : step.body_loads)
+    add_body_load(model, load, body_acceleration(model, load, step_time, total_time, ramp), u, f);
+  return f;
+}
+
+DistributedLoadShapes distributed_load_shapes(const model::Model& model, const model::Step& step) {
+  DistributedLoadShapes shapes;
+  const auto shape_of = [&](int amplitude) -> VecX& {
+    const auto at = std::find(shapes.amplitudes.begin(), shapes.amplitudes.end(), amplitude);
+    if (at != shapes.amplitudes.end()) return shapes.forces[at - shapes.amplitudes.begin()];
+    shapes.amplitudes.push_back(amplitude);
+    return shapes.forces.emplace_back(VecX::Zero(3 * model.n_nodes()));
+  };
+  for (const auto& load : step.pressures)
+    add_pressure(model, load, model.mesh.coords, load.value, shape_of(load.amplitude));
+  const VecX at_rest = VecX::Zero(3 * model.n_nodes());
   for (const auto& load : step.body_loads) {
-    const element::BodyAcceleration b =
-        body_acceleration(model, load, step_time, total_time, ramp);
-    for (int e : load.elements) {
-      const auto& el = model.mesh.elements[static_cast<std::size_t>(e)];
-      VecX fe;
-      naming_element(el, [&] {
-        element::body_load(el.type, element_coords(model, el), element_displacements(el, u),
-                           element_material_def(model, el).density.rows.front()[0], b, fe);
-      });
-      for (std::size_t a = 0; a < el.nodes.size(); ++a)
-        f.segment<3>(3 * el.nodes[a]) += fe.segment<3>(3 * static_cast<Index>(a));
-    }
+    element::BodyAcceleration unit = body_acceleration(model, load, 0, 0, 1);
+    unit.magnitude = load.value;
+    add_body_load(model, load, unit, at_rest, shape_of(load.amplitude));
   }
+  return shapes;
+}
+
+VecX distributed_forces(const model::Model& model, const DistributedLoadShapes& shapes,
+                        Real step_time, Real total_time, Real ramp) {
+  VecX f = VecX::Zero(3 * model.n_nodes());
+  for (std::size_t k = 0; k < shapes.forces.size(); ++k)
+    f += load_factor(model, shapes.amplitudes[k], step_time, total_time, ramp) * shapes.forces[k];
   return f;
 }
 

@@ -3,6 +3,8 @@
 // step end (linear analysis) or ramp from the previous step's end values (nonlinear).
 #pragma once
 
+#include <vector>
+
 #include "assembly/dof_map.hpp"
 #include "element/body_load.hpp"
 #include "model/model.hpp"
@@ -31,6 +33,19 @@ VecX pressure_forces(const model::Model& model, const model::Step& step, Real st
 /// (3 * n_nodes): zero for small strain; under NLGEOM the centrifugal force follows the mass.
 VecX body_forces(const model::Model& model, const model::Step& step, Real step_time,
                  Real total_time, Real ramp, const VecX& u);
+
+/// A step's *DLOAD pressures and body loads on the reference configuration, summed per
+/// amplitude (-1: ramped with the step) at unit load factor. Without NLGEOM they are linear in
+/// their factors, so a step computes them once instead of at every Newton iteration.
+struct DistributedLoadShapes {
+  std::vector<int> amplitudes;
+  std::vector<VecX> forces;  ///< 3 * n_nodes each
+};
+DistributedLoadShapes distributed_load_shapes(const model::Model& model, const model::Step& step);
+
+/// pressure_forces + body_forces on the reference configuration, from the step's shapes.
+VecX distributed_forces(const model::Model& model, const DistributedLoadShapes& shapes,
+                        Real step_time, Real total_time, Real ramp);
 
 /// The acceleration field of a body load scaled by its load factor at a time.
 element::BodyAcceleration body_acceleration(const model::Model& model, const model::BodyLoad& load,
