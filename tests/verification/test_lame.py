@@ -103,11 +103,31 @@ def run_level(args, rep, name, n, tol_u, tol_s):
             stt = s * s * sxx + c * c * syy - 2 * s * c * sxy
             es = max(es, abs(stt / stt_exact(r) - 1))
             ez = max(ez, abs(szz - 2 * NU * AC) / stt_exact(r))
-    rep.check(f"{name} hoop stress at inner ips within {tol_s:g}", es <= tol_s,
-              f"max rel error {es:.3e}")
-    rep.check(f"{name} sigma_zz at inner ips within {tol_s:g}", ez <= tol_s,
-              f"max error/hoop {ez:.3e}")
+    check_inner_stresses(rep, name, tol_s, es, ez)
     return eu["INNER"], eu["OUTER"], es, ez
+
+
+def check_inner_stresses(rep, name, tol_s, hoop_error, axial_error):
+    """The hoop stress (relative) and the axial stress (against the hoop) at the inner points."""
+    rep.check(f"{name} hoop stress at inner points within {tol_s:g}", hoop_error <= tol_s,
+              f"max rel error {hoop_error:.3e}")
+    rep.check(f"{name} axial stress at inner points within {tol_s:g}", axial_error <= tol_s,
+              f"max error/hoop {axial_error:.3e}")
+
+
+def run_levels(rep, args, levels, run_level, cells_header):
+    """Every level of `levels` through run_level, their table, and the hoop error falling with h."""
+    rows, res = [], {}
+    for name, (n, tu, ts) in levels.items():
+        r = vutil.guarded(rep, f"{name} level", run_level, args, rep, name, n, tu, ts)
+        res[name] = r
+        f = (lambda i: "n/a" if r is None else f"{r[i]:.3e}")
+        rows.append((name, "x".join(str(k) for k in n), f(0), f(1), f(2), f(3)))
+    rep.table(("level", cells_header, "u_r inner", "u_r outer", "hoop (inner points)",
+               "axial/hoop"), rows)
+    if res["coarse"] and res["fine"]:
+        rep.check("hoop-stress error decreases coarse -> fine", res["fine"][2] < res["coarse"][2],
+                  f"{res['coarse'][2]:.3e} -> {res['fine'][2]:.3e}")
 
 
 def main():
@@ -115,18 +135,7 @@ def main():
     rep = vutil.Report(f"Lame thick cylinder ({args.solver}: {args.exe})")
     print(f"Lame: u_r(a)={ur_exact(RA):.6e}  u_r(b)={ur_exact(RB):.6e}  "
           f"sigma_tt(a)={stt_exact(RA):.4f}  sigma_zz={2*NU*AC:.4f}")
-    rows, res = [], {}
-    for name, (n, tu, ts) in LEVELS.items():
-        r = vutil.guarded(rep, f"{name} level", run_level, args, rep, name, n, tu, ts)
-        res[name] = r
-        f = (lambda i: "n/a" if r is None else f"{r[i]:.3e}")
-        rows.append((name, f"{n[0]}x{n[1]}x{n[2]}", f(0), f(1), f(2), f(3)))
-    rep.table(("level", "cells r x th x z", "u_r inner", "u_r outer",
-               "hoop (inner ips)", "szz/hoop"), rows)
-    if res["coarse"] and res["fine"]:
-        rep.check("hoop-stress error decreases coarse -> fine",
-                  res["fine"][2] < res["coarse"][2],
-                  f"{res['coarse'][2]:.3e} -> {res['fine'][2]:.3e}")
+    run_levels(rep, args, LEVELS, run_level, "cells r x th x z")
     rep.finish()
 
 

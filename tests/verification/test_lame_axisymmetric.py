@@ -31,7 +31,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import datfile  # noqa: E402
 import vutil  # noqa: E402
 # The same cylinder and closed form as the 3-D Lame test (plane strain: sigma_zz = 2 nu A).
-from test_lame import AC, E, NU, P, RA, RB, stt_exact, ur_exact  # noqa: E402
+from test_lame import (AC, E, NU, P, RA, RB, check_inner_stresses, run_levels,  # noqa: E402
+                       stt_exact, ur_exact)
 
 H = 0.5
 COS1 = math.cos(math.radians(1.0))
@@ -104,27 +105,14 @@ def run_level(args, rep, name, n, tol_u, tol_s):
             sxx, syy, szz = st[(e, ip)][:3]
             es = max(es, abs(szz / stt_exact(r_ip) - 1))
             ez = max(ez, abs(syy - 2 * NU * AC) / stt_exact(r_ip))
-    rep.check(f"{name} hoop stress at inner points within {tol_s:g}", es <= tol_s,
-              f"max rel error {es:.3e}")
-    rep.check(f"{name} axial stress at inner points within {tol_s:g}", ez <= tol_s,
-              f"max error/hoop {ez:.3e}")
+    check_inner_stresses(rep, name, tol_s, es, ez)
     return eu["inner"], eu["outer"], es, ez
 
 
 def main():
     args = vutil.parse_args(__doc__.splitlines()[0], "work_lame_axisymmetric")
     rep = vutil.Report(f"Lame thick cylinder, CAX8 ({args.solver}: {args.exe})")
-    rows, res = [], {}
-    for name, (n, tu, ts) in LEVELS.items():
-        r = vutil.guarded(rep, f"{name} level", run_level, args, rep, name, n, tu, ts)
-        res[name] = r
-        f = (lambda i: "n/a" if r is None else f"{r[i]:.3e}")
-        rows.append((name, f"{n[0]}x{n[1]}", f(0), f(1), f(2), f(3)))
-    rep.table(("level", "cells r x y", "u_r inner", "u_r outer", "hoop (inner pts)",
-               "axial/hoop"), rows)
-    if res["coarse"] and res["fine"]:
-        rep.check("hoop-stress error decreases coarse -> fine", res["fine"][2] < res["coarse"][2],
-                  f"{res['coarse'][2]:.3e} -> {res['fine'][2]:.3e}")
+    run_levels(rep, args, LEVELS, run_level, "cells r x y")
     rep.finish()
 
 
