@@ -46,6 +46,16 @@ inline Mat6 elasticity_matrix_for_test(const LinearElastic& m) {
   return D;
 }
 
+/// A smooth displacement field on nodes `x`, strains of about 10 % at scale 1: large enough to
+/// exercise the geometric terms of the finite-strain tangents.
+inline MatX3 smooth_displacement(const MatX3& x, Real scale = 1) {
+  MatX3 u(x.rows(), 3);
+  for (Index a = 0; a < x.rows(); ++a)
+    u.row(a) << 0.08 * x(a, 1) + 0.05 * x(a, 0) * x(a, 2), -0.06 * x(a, 2) + 0.03 * x(a, 0),
+        0.1 * x(a, 0) - 0.04 * x(a, 1) * x(a, 1);
+  return scale * u;
+}
+
 inline LinearElastic test_material() { return {210000.0, 0.3, 1.2e-5}; }
 
 /// Uniform-random point inside the reference domain of a volume topology.

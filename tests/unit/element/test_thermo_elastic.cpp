@@ -74,12 +74,7 @@ class ThermoElasticKernel : public ::testing::TestWithParam<ElementType> {
     return m;
   }
   MatX3 displacement(Real scale) const {
-    const MatX3 x = X();
-    MatX3 u(x.rows(), 3);
-    for (Index a = 0; a < x.rows(); ++a)
-      u.row(a) << 0.08 * x(a, 1) + 0.05 * x(a, 0) * x(a, 2), -0.06 * x(a, 2) + 0.03 * x(a, 0),
-          0.1 * x(a, 0) - 0.04 * x(a, 1) * x(a, 1);
-    return scale * u;
+    return test::smooth_displacement(X(), scale);
   }
 };
 

@@ -17,14 +17,8 @@ class TotalLagrangian : public ::testing::TestWithParam<ElementType> {
  protected:
   ElementType type() const { return GetParam(); }
   MatX3 X() const { return test::distorted_coordinates(volume_topology(type())); }
-  /// A moderately large, smooth displacement field (strains of about 10 %).
   MatX3 displacement(Real scale = 1) const {
-    const MatX3 x = X();
-    MatX3 u(x.rows(), 3);
-    for (Index a = 0; a < x.rows(); ++a)
-      u.row(a) << 0.08 * x(a, 1) + 0.05 * x(a, 0) * x(a, 2), -0.06 * x(a, 2) + 0.03 * x(a, 0),
-          0.1 * x(a, 0) - 0.04 * x(a, 1) * x(a, 1);
-    return scale * u;
+    return test::smooth_displacement(X(), scale);
   }
   LinearElastic mat() const { return {1000.0, 0.3, 0.0}; }
 };
