@@ -62,6 +62,8 @@ struct Acceptance {
   Real redo_factor = 1;
   std::string reason;           ///< why it is redone, with the numbers
   bool required = false;        ///< wrong as it stands: redone or failed, never kept
+  /// Within the tolerance a redo aims at, but a refreeze would sharpen it: may stand as it is.
+  bool refreeze_only = false;
 };
 
 /// The deepest penetration of a slave point into a master face outside its increment's search
@@ -116,6 +118,12 @@ class ContactSystem {
   /// Node lists of the contact groups of this increment (slave nodes first, then the master
   /// face's nodes); the same while begin_increment found the same candidates.
   const std::vector<std::vector<int>>& groups() const { return group_nodes_; }
+  /// Freezes the linear variants' contact geometry again at `u` within the increment that
+  /// started at `increment_start`: candidates, points and pairing as begin_increment finds them
+  /// at `u`; each point's friction state, relative motion and initial-overlap offsets still
+  /// from the increment's start. A converged increment whose frozen gaps drifted goes on from
+  /// its solution with this instead of being redone smaller.
+  void refreeze(const VecX& u, const VecX& increment_start, int threads);
 
   /// Evaluates every point at displacements `u` into the trial states and the group forces
   /// and tangents. Throws SolverError on non-finite values.
@@ -276,7 +284,10 @@ class ContactSystem {
     MatX states;                ///< one packed FrictionState per row
     MatX corners;               ///< faces: per corner, averaged over the faces at its node
   };
-  void build_points(Unit& unit, const VecX& u, const OldStates& old) const;
+  /// With `increment_start` (a refreeze): the relative motion friction sees and the offsets
+  /// measured from the increment's start.
+  void build_points(Unit& unit, const VecX& u, const OldStates& old,
+                    const VecX* increment_start) const;
   /// The committed friction states of every unit's points, with averaged face corners.
   std::vector<OldStates> committed_states() const;
   Pairing pair_point(const Unit& unit, const UnitGeometry& g, const Point& pt,

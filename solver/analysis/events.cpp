@@ -66,7 +66,8 @@ bool read_summary(const json& j, Event& e) {
          read(s, "max_mises", e.max_mises) &&
          read(s, "max_contact_pressure", e.max_contact_pressure) &&
          read(s, "total_contact_force", e.total_contact_force) &&
-         read(s, "drift_redos", e.drift_redos);
+         read(s, "drift_redos", e.drift_redos) &&
+         read(s, "drift_refreezes", e.drift_refreezes);
 }
 
 }  // namespace
@@ -120,6 +121,7 @@ std::string to_json_line(const Event& e) {
       j["summary"]["max_contact_pressure"] = e.max_contact_pressure;
       j["summary"]["total_contact_force"] = e.total_contact_force;
       j["summary"]["drift_redos"] = e.drift_redos;
+      j["summary"]["drift_refreezes"] = e.drift_refreezes;
     }
   }
   j["wall_time"] = e.wall_time;

@@ -44,6 +44,7 @@ struct Event {
   bool has_contact = false;             ///< the contact figures below apply
   Real max_contact_pressure = 0, total_contact_force = 0;
   int drift_redos = 0;                  ///< increments redone because frozen projections drifted
+  int drift_refreezes = 0;              ///< contact geometries frozen again for the same reason
   PhaseTimes times{};                   ///< nonlinear runs
 };
 

@@ -241,6 +241,7 @@ class NonlinearStatic {
     contact_.set_stabilisation(stabilisation_.factor());
     bool at_start = true;   // the iterate sits where the attempt started
     int level_it = 0;       // iterations of the current level (of the attempt, unstabilised)
+    int refreezes = 0;      // of the attempt's drifted contact geometry
     for (int it = 1;; ++it) {
       if (options_.cancel && options_.cancel->load())
         throw Cancelled("cancelled in step " + std::to_string(sc.number) + ", increment " +
@@ -317,10 +318,14 @@ class NonlinearStatic {
                                                "surfaces or use a Gauss-Cut scheme)"));
       }
       if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
-        verdict = judged_by_contact(sc, a.u);
+        verdict = judged_by_contact(sc, a, refreezes);
         if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
           retry_stabilised_ = false;
           return commit_increment(sc, a, it);
+        }
+        if (verdict.kind == nonlinear::Verdict::Kind::Iterate) {  // a new Newton solve from here
+          level_it = 0;
+          continue;
         }
         return cut_back(sc, a, it, verdict);
       }
@@ -397,19 +402,30 @@ class NonlinearStatic {
     return convergence_->check(it, {q_bar, max_abs(a.ev.system.rhs), c_max, contact_count()});
   }
 
-  /// Contact's verdict on an increment converged at `u`: it stands, or is redone smaller. A
-  /// drifted frozen geometry is redone while the increment limits allow it (beyond the thesis,
-  /// section 7.1); a missed contact always (the cutback fails the step at those limits).
-  nonlinear::Verdict judged_by_contact(const StepContext& sc, const VecX& u) {
+  /// Contact's verdict on the increment converged at the iterate of `a`: it stands, or goes on
+  /// (Iterate) from a contact geometry frozen again at the iterate, or is redone smaller. A
+  /// drifted frozen geometry is frozen again up to kMaxRefreezes times, then redone smaller
+  /// while the increment limits allow it (beyond the thesis, section 7.1: the answer must meet
+  /// the same drift check either way; refreezing saves redoing a sliding increment from its
+  /// start); a missed contact is always redone (the cutback fails the step at those limits).
+  nonlinear::Verdict judged_by_contact(const StepContext& sc, const Attempt& a, int& refreezes) {
     nonlinear::Verdict converged;
     converged.kind = nonlinear::Verdict::Kind::Converged;
     if (contact_.empty()) return converged;
-    const contact::Acceptance acceptance = contact_.accept(u, options_.drift_check);
+    const contact::Acceptance acceptance = contact_.accept(a.u, options_.drift_check);
+    if (acceptance.accepted) return converged;
+    if (!acceptance.required && refreezes < kMaxRefreezes) {
+      timed(times_.contact_search, [&] { contact_.refreeze(a.u, u_, threads_); });
+      ++refreezes;
+      ++drift_refreezes_;
+      timed(times_.pattern, [&] { layout_.set_contact_groups(contact_.groups(), *solver_, threads_); });
+      return {.kind = nonlinear::Verdict::Kind::Iterate, .reason = acceptance.reason};
+    }
     const bool redo_allowed =
         !sc.step->procedure.direct &&
         acceptance.redo_factor * increments_->increment() >= increments_->min_increment() &&
         increments_->attempt() <= sc.controls.max_cutbacks;
-    if (acceptance.accepted || (!redo_allowed && !acceptance.required)) return converged;
+    if (acceptance.refreeze_only || (!redo_allowed && !acceptance.required)) return converged;
     if (!acceptance.required) ++drift_redos_;
     return {.kind = nonlinear::Verdict::Kind::Cutback, .cutback_factor = acceptance.redo_factor,
             .reason = acceptance.reason};
@@ -508,6 +524,7 @@ class NonlinearStatic {
     done.max_contact_pressure = max_contact_pressure_;
     done.total_contact_force = total_contact_force_;
     done.drift_redos = drift_redos_;
+    done.drift_refreezes = drift_refreezes_;
     done.times = times_;
     events_.on_event(done);
   }
@@ -541,7 +558,9 @@ class NonlinearStatic {
 
   // Figures for the done event
   PhaseTimes times_;
-  int total_iterations_ = 0, drift_redos_ = 0;
+  int total_iterations_ = 0, drift_redos_ = 0, drift_refreezes_ = 0;
+  /// A drift that survives this many refreezes comes from the increment's size: redo it smaller.
+  static constexpr int kMaxRefreezes = 3;
   Real step_stabilisation_energy_ = 0;
   Real max_mises_ = 0, max_contact_pressure_ = 0, total_contact_force_ = 0;
 };

@@ -9,9 +9,8 @@ all) or keeps points on faces that slid away.
 Known answer (sliding_cylinder.py): the nodal contact pressure at the end of the slide is the
 pressure at the end of the press turned half about the y axis, exactly for the discrete
 problem. Checked per scheme:
-  converged   the run converges, or stops with a message (the linear variants: the drift
-              check may need more increments than *STEP INC allows on a faceted master);
-              never a converged run with a wrong answer
+  converged   the run converges (the linear variants freeze their contact geometry again
+              where it drifted, contact/README.md)
   turned      max |p2(x, z) - p1(-x, h - z)| / max p1 <= TOLERANCE for a converged run
 ccx 2.20 (--ccx) solves the same decks as reference columns.
 
@@ -30,18 +29,15 @@ import frd_file  # noqa: E402
 import sliding_cylinder  # noqa: E402
 import solvers  # noqa: E402
 
-# nts 1.3e-3, gc7 1.3e-2 measured at level 1 in 4 increments (2026-12-02); a lost contact is 1,
-# a frozen pairing on faces that slid away several times p0
+# nts 1.3e-3, gc7 1.3e-2, lgc7 2.9e-3 measured at level 1 in 4 increments (2026-12-02); a lost
+# contact is 1, a frozen pairing on faces that slid away several times p0
 TOLERANCE = 0.05
-STOPS_ALLOWED = ("lgauss", "lgc1", "lgc3", "lgc7", "lgc12")  # the drift check's increment limit
 
 
 def evaluate(model, label, run):
     """[(check, passed, detail)] of one run."""
     if not run.converged:
-        allowed = label.split()[-1] in STOPS_ALLOWED and run.status == "not converged" \
-            and "increments" in run.message
-        return [("converged or stopped with a message", allowed, f"{run.status}: {run.message}")]
+        return [("converged", False, f"{run.status}: {run.message}")]
     path = os.path.join(run.result_dir, "sliding.frd")
     try:
         error = sliding_cylinder.mirror_error(model, frd_file.read(path))

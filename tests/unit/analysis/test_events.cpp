@@ -27,6 +27,7 @@ std::vector<Event> sample_events() {
       {.kind = Kind::Done, .wall_time = 2, .status = "converged", .iterations = 17,
        .max_displacement = 0.125, .max_mises = 250.5, .has_contact = true,
        .max_contact_pressure = 12.5, .total_contact_force = 1e3, .drift_redos = 1,
+       .drift_refreezes = 2,
        .times = {.contact_search = 0.5, .pattern = 0.25, .elements = 1, .contact = 0.125,
                  .factorisation = 0.75, .solve = 0.0625}},
       {.kind = Kind::Done, .status = "input_error", .message = "deck.inp:2: *: no keyword"},

@@ -348,6 +348,72 @@ TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
   EXPECT_NEAR(redo.redo_factor, std::sqrt(0.8 * 0.1 / sys.frozen_drift(slid)), 1e-12);
 }
 
+TEST(ContactSystem, ARefreezeAtTheSolutionRemovesTheDrift) {
+  // The bowl of the test above, slid 0.2 within the increment and lowered with the bowl's
+  // surface: frozen again there, the gaps are those of fresh projections, and it stands.
+  fixtures::TwoBlocks t;
+  t.lower = {"C3D20", 6, 1};
+  t.upper = {"C3D8", 2, 1};
+  t.upper_size = 0.2;
+  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
+      m.mesh.coords(n, 2) -= 0.3 * std::pow(m.mesh.coords(n, 0) - 0.5, 2);
+  ContactSystem sys(m);
+  VecX u = VecX::Zero(3 * m.n_nodes());
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+  sys.begin_increment(u, {.step = 2}, 1);
+  VecX slid = u;
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) {
+      slid(3 * n) = 0.2;
+      slid(3 * n + 2) -= 0.3 * 0.2 * 0.2;
+    }
+  sys.update(slid, 1);
+  ASSERT_GT(sys.frozen_drift(slid), 0.1);  // redone smaller without the refreeze
+  sys.refreeze(slid, u, 1);
+  sys.update(slid, 1);
+  ASSERT_GT(sys.n_active(), 0);
+  EXPECT_LT(sys.frozen_drift(slid), 1e-9);
+  EXPECT_TRUE(sys.accept(slid).accepted);
+}
+
+TEST(ContactSystem, ARefreezeKeepsTheFrictionOfTheWholeIncrement) {
+  // Flat blocks pressed and dragged 0.01 along x within one sticking increment: frozen again at
+  // the dragged state, the points still see the drag since the increment's start, so the
+  // friction force is the same (measured from the refreeze it would vanish).
+  fixtures::TwoBlocks t;
+  t.lower = {"C3D8", 3, 1};
+  t.upper = {"C3D8", 2, 1};
+  t.upper_size = 0.5;
+  t.offset_x = 0.1;
+  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
+  add_friction(m, 100, 3e4);
+  ContactSystem sys(m);
+  sys.begin_step(m.steps[0]);
+  VecX u = VecX::Zero(3 * m.n_nodes());
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+  sys.begin_increment(u, {.step = 2}, 1);
+  VecX dragged = u;
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) dragged(3 * n) = 0.01;
+  const auto upper_shear = [&](const VecX& f) {
+    Real sum = 0;
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) sum += f(3 * n);
+    return sum;
+  };
+  VecX before, after;
+  assembled(sys, dragged, before, nullptr);
+  ASSERT_GT(sys.n_sticking(), 0);
+  ASSERT_GT(std::abs(upper_shear(before)), 0);
+  sys.refreeze(dragged, u, 1);
+  assembled(sys, dragged, after, nullptr);
+  EXPECT_NEAR(upper_shear(after), upper_shear(before), 1e-9 * std::abs(upper_shear(before)));
+}
+
 TEST(ContactSystem, AMissedContactIsRedoneWhateverTheScheme) {
   // A small block pressed on a 6 x 6 block, then slid 0.5 along x within one increment: far
   // beyond the faces the increment's search offered it (two face sizes, 0.2): the fresh search
