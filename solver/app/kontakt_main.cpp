@@ -27,8 +27,9 @@ void print_usage(std::FILE* out) {
       "  --scheme NAME  contact scheme of every pair (nts, gauss, lgauss, gc1..gc12, lgc1..lgc12)\n"
       "  --contact-stabilisation MODE  springs that hold bodies only contact holds: auto (when\n"
       "               an increment needs them), always, never; released before an increment ends\n"
-      "  --drift-check on|off  redo a linear variant's increment smaller when its frozen gaps\n"
-      "               drift from fresh projections (default on; off to measure what it does)\n"
+      "  --drift-check on|off  freeze a linear variant's contact geometry again at the solution\n"
+      "               (or redo the increment smaller) when its frozen gaps drift from fresh\n"
+      "               projections (default on; off to measure what it does)\n"
       "  exit codes: 0 converged, 2 input error, 3 not converged or cancelled (converged\n"
       "  increments kept), 4 numerical/internal error\n"
       "\n",
