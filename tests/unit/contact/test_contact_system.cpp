@@ -316,10 +316,9 @@ TEST(ContactSystem, FrozenDriftIgnoresRoundOffWithoutOverclosure) {
   EXPECT_TRUE(sys.accept(u).accepted);
 }
 
-TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
-  // Lower block's top bent into a bowl z = 1 - 0.3 (x - 0.5)^2; a small flat block pressed on
-  // its bottom. Without sliding the frozen gaps are exact; after sliding 0.2 along x the
-  // frozen projections are far from the surface under the points.
+/// The lower block's top bent into a bowl z = 1 - 0.3 (x - 0.5)^2 (C3D20, 6 x 6) under a small
+/// flat block (0.2 wide), lgc7.
+model::Model bowl_under_small_block() {
   fixtures::TwoBlocks t;
   t.lower = {"C3D20", 6, 1};
   t.upper = {"C3D8", 2, 1};
@@ -328,10 +327,24 @@ TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
   for (int n = 0; n < m.n_nodes(); ++n)
     if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
       m.mesh.coords(n, 2) -= 0.3 * std::pow(m.mesh.coords(n, 0) - 0.5, 2);
-  ContactSystem sys(m);
+  return m;
+}
+
+/// The upper block moved down by `depth`.
+VecX upper_lowered(const model::Model& m, Real depth) {
   VecX u = VecX::Zero(3 * m.n_nodes());
   for (int n = 0; n < m.n_nodes(); ++n)
-    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -depth;
+  return u;
+}
+
+TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
+  // Lower block's top bent into a bowl z = 1 - 0.3 (x - 0.5)^2; a small flat block pressed on
+  // its bottom. Without sliding the frozen gaps are exact; after sliding 0.2 along x the
+  // frozen projections are far from the surface under the points.
+  const model::Model m = bowl_under_small_block();
+  ContactSystem sys(m);
+  const VecX u = upper_lowered(m, 1e-3);
   sys.begin_increment(u, {.step = 2}, 1);
   sys.update(u, 1);
   ASSERT_GT(sys.n_active(), 0);
@@ -351,18 +364,9 @@ TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
 TEST(ContactSystem, ARefreezeAtTheSolutionRemovesTheDrift) {
   // The bowl of the test above, slid 0.2 within the increment and lowered with the bowl's
   // surface: frozen again there, the gaps are those of fresh projections, and it stands.
-  fixtures::TwoBlocks t;
-  t.lower = {"C3D20", 6, 1};
-  t.upper = {"C3D8", 2, 1};
-  t.upper_size = 0.2;
-  model::Model m = fixtures::two_blocks_model(t, 1e5, scheme("lgc7"));
-  for (int n = 0; n < m.n_nodes(); ++n)
-    if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
-      m.mesh.coords(n, 2) -= 0.3 * std::pow(m.mesh.coords(n, 0) - 0.5, 2);
+  const model::Model m = bowl_under_small_block();
   ContactSystem sys(m);
-  VecX u = VecX::Zero(3 * m.n_nodes());
-  for (int n = 0; n < m.n_nodes(); ++n)
-    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+  const VecX u = upper_lowered(m, 1e-3);
   sys.begin_increment(u, {.step = 2}, 1);
   VecX slid = u;
   for (int n = 0; n < m.n_nodes(); ++n)
@@ -392,9 +396,7 @@ TEST(ContactSystem, ARefreezeKeepsTheFrictionOfTheWholeIncrement) {
   add_friction(m, 100, 3e4);
   ContactSystem sys(m);
   sys.begin_step(m.steps[0]);
-  VecX u = VecX::Zero(3 * m.n_nodes());
-  for (int n = 0; n < m.n_nodes(); ++n)
-    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -1e-3;
+  const VecX u = upper_lowered(m, 1e-3);
   sys.begin_increment(u, {.step = 2}, 1);
   VecX dragged = u;
   for (int n = 0; n < m.n_nodes(); ++n)
