@@ -27,6 +27,7 @@ function summary_text(s) {
   if (!s) return "";
   const parts = [`${s.iterations} iterations`];
   for (const [k, name] of SUMMARY_PARTS) if (typeof s[k] === "number") parts.push(`${name} ${fmt_number(s[k])}`);
+  if (s.drift_refreezes) parts.push(`${s.drift_refreezes} drift refreezes`);
   if (s.drift_redos) parts.push(`${s.drift_redos} drift redos`);
   return ": " + parts.join(", ");
 }

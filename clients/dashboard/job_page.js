@@ -140,7 +140,7 @@ function build_actions() {
 async function load_summary() {
   try {
     const s = await get_json(`/v1/jobs/${id}/summary`);
-    const drift = runs.done?.summary?.drift_redos;
+    const { drift_refreezes: refreezes, drift_redos: drift } = runs.done?.summary ?? {};
     fill("summary",
       ...fact("status", status_chip(s.status, s.reason)),
       ...fact("iterations", s.iterations ?? "–"),
@@ -149,6 +149,7 @@ async function load_summary() {
       ...fact("max von Mises", fmt_number(s.max_mises) || "–"),
       ...fact("max CPRESS", fmt_number(s.max_contact_pressure) || "–"),
       ...fact("total contact force", fmt_number(s.total_contact_force) || "–"),
+      ...(refreezes !== undefined ? fact("drift refreezes", refreezes) : []),
       ...(drift !== undefined ? fact("drift redos", drift) : []));
   } catch (e) {
     show_error("summary: " + e.message);
@@ -290,7 +291,7 @@ function on_stream_state(state) {
   fill("stream-state", text);
   document.getElementById("stream-state").dataset.state = state;
   if (state === "ended") {
-    load_summary();  // again: the drift redos come from the done event just replayed
+    load_summary();  // again: the drift counts come from the done event just replayed
     render();
     explain_empty_plots();
     document.getElementById("job-header").dataset.historyLoaded = "true";

@@ -106,8 +106,10 @@ test("contact job page: plots hold every iteration, tables match the API", async
   const shown = await page.$$eval("#increments tbody tr[data-step]", (rows) => rows.map((r) =>
     [r.dataset.step, r.dataset.increment, r.dataset.attempt, r.dataset.iterations, r.dataset.converged]));
   assert.deepEqual(shown, expected);
-  assert.ok(expected.some((r) => r[4] === "false"), "the Hertz run redoes an increment");
-  assert.ok(await page.locator("#increments tr.row-drift").count() >= 1, "the drift redo is marked");
+  // The default scheme's drift check froze the Hertz contact again at least once, and the page
+  // says so (the rows of redone increments are marked: tests/web/unit/run_history.test.js).
+  await page.waitForFunction(() =>
+    /drift refreezes\s*[1-9]/.test(document.querySelector("#summary").textContent));
 
   const summary = await page.textContent("#summary");
   const s = await api(OPEN, `/v1/jobs/${contact_job.id}/summary`);

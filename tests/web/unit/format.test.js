@@ -35,8 +35,8 @@ test("event lines name the place, the measures and any new numeric field", () =>
   assert.equal(event_text({ seq: 2, event: "status", status: "failed", reason: "not_converged", message: "too many cutbacks" }),
                "#2 status failed (not_converged): too many cutbacks");
   assert.match(event_text({ seq: 5, event: "done", status: "converged", wall_time: 2,
-                            summary: { iterations: 7, max_displacement: 0.5, max_mises: 100, max_contact_pressure: 3, total_contact_force: 4, drift_redos: 1 } }),
-               /done converged: 7 iterations, max \|U\| 0.5, max Mises 100, max CPRESS 3, contact force 4, 1 drift redos/);
+                            summary: { iterations: 7, max_displacement: 0.5, max_mises: 100, max_contact_pressure: 3, total_contact_force: 4, drift_refreezes: 2, drift_redos: 1 } }),
+               /done converged: 7 iterations, max \|U\| 0.5, max Mises 100, max CPRESS 3, contact force 4, 2 drift refreezes, 1 drift redos/);
   assert.match(event_text({ seq: 6, event: "cutback", step: 1, increment: 2, attempt: 1, iteration: 16, message: "diverged" }),
                /inc 2 cut back after 16 it .*: diverged/);
 });
