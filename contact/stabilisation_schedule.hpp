@@ -8,7 +8,10 @@
 // something touches by 10. When contact carries nearly all the load the springs are released
 // and the increment converges without them; if that release fails, the levels go on down
 // (from the last stabilised solution) until the springs carry a negligible share of the normal
-// force, which leaves the solution of the unstabilised problem to within that share.
+// force, which leaves the solution of the unstabilised problem to within that share. A level
+// that fails is retried from the last converged one with half the step in log(factor) (a
+// point contact that tilts as the springs weaken must reach its next node gradually, not jump
+// past it); each converged level doubles the step again, up to the factor of 10.
 // Pure bookkeeping.
 #pragma once
 
@@ -33,6 +36,9 @@ class StabilisationSchedule {
   /// ... and at most this share counts as released already: the springs change the answer
   /// by less than this relative amount, far below the residual tolerance of convergence.
   static constexpr Real kNegligibleShare = 1e-7;
+  /// A failed level is not retried once its ratio to the last converged level exceeds this:
+  /// levels closer than that change the springs too little to cross anything new.
+  static constexpr Real kMaxRetryRatio = 0.8;
 
   enum class Next {
     Continue,            ///< iterate on at factor() from the current solution
@@ -55,7 +61,9 @@ class StabilisationSchedule {
   /// `share` of the normal force. `approach` (ContactSystem::approach_ratio) is the factor
   /// ratio that lands the bodies on contact, when nothing touches.
   Next converged(Real energy, Real share, std::optional<Real> approach);
-  /// The current level, or the release, failed to converge.
+  /// The current level, or the release, failed to converge: RestoreAndContinue goes back to
+  /// the last converged level's solution with a milder factor (or springs one level weaker
+  /// after a failed release); GiveUp when no level converged yet or the step is exhausted.
   Next failed();
 
   /// The energy the springs held when they were released (that of the last converged level):
@@ -66,6 +74,8 @@ class StabilisationSchedule {
 
  private:
   Real factor_ = 0;              ///< 0: not engaged
+  Real held_factor_ = 0;         ///< of the last converged level (0: none yet)
+  Real step_ = kLevelRatio;      ///< between touching levels, halved in log per failed level
   bool releasing_ = false;
   bool release_failed_ = false;  ///< a release failed in this attempt: step down to negligible
   Real released_energy_ = 0;     ///< spring energy of the last converged level

@@ -330,12 +330,14 @@ class NonlinearStatic {
         return cut_back(sc, a, it, verdict);
       }
       if (verdict.kind != nonlinear::Verdict::Kind::Cutback) continue;
-      if (stabilisation_.releasing()) {
-        release_failure = verdict.reason;
+      if (stabilisation_.engaged()) {
+        const bool release = stabilisation_.releasing();
+        if (release) release_failure = verdict.reason;
         if (stabilisation_.failed() == Next::RestoreAndContinue) {
           warn(sc.number, "increment " + std::to_string(increments_->increment_number()) +
-                              ": releasing the contact stabilisation failed (" + verdict.reason +
-                              "); back to its last level, with springs of " +
+                              (release ? ": releasing the contact stabilisation failed ("
+                                       : ": a contact stabilisation level failed (") +
+                              verdict.reason + "); back to the last converged level, with springs of " +
                               std::to_string(stabilisation_.factor()) + " times the penalty");
           a.x = x_saved;
           a.u = u_saved;

@@ -1,8 +1,11 @@
 // The contact stabilisation's continuation: while nothing touches, the springs weaken just
 // enough to land the bodies on contact; then they step down by 10 until contact carries the
-// load and are released; a failed release goes back one level further down, and springs that
+// load and are released; a failed release goes back one level further down, a failed level is
+// retried from the last converged one with half the step in log(factor), and springs that
 // carry a negligible share count as released; what the release removed is reported.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "contact/stabilisation_schedule.hpp"
 
@@ -57,7 +60,7 @@ TEST(StabilisationSchedule, AFailedReleaseGoesBackAndStepsDownToNegligibleSpring
   EXPECT_DOUBLE_EQ(s.absorbed_energy(), 0.01);
 }
 
-TEST(StabilisationSchedule, GivesUpWhenAStabilisedLevelFailsOrTheSpringsGetTooWeak) {
+TEST(StabilisationSchedule, GivesUpWhenTheFirstLevelFailsOrTheSpringsGetTooWeak) {
   S s;
   s.engage();
   EXPECT_EQ(s.failed(), Next::GiveUp);  // the springs themselves do not converge
@@ -66,6 +69,42 @@ TEST(StabilisationSchedule, GivesUpWhenAStabilisedLevelFailsOrTheSpringsGetTooWe
   while (s.converged(1, 1, std::nullopt) == Next::Continue) ++levels;
   EXPECT_EQ(levels, 7);  // 1e-2 ... 1e-9: weaker springs no longer hold a body numerically
   EXPECT_GE(s.factor(), S::kMinFactor);
+}
+
+TEST(StabilisationSchedule, AFailedLevelIsRetriedWithHalfTheStepWhichThenGrowsBack) {
+  S s;
+  s.engage();
+  EXPECT_EQ(s.converged(1, 0.5, std::nullopt), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-3);
+  // 1e-3 fails: back to 1e-2's solution, half the step in log (ratio sqrt(0.1)), and again.
+  EXPECT_EQ(s.failed(), Next::RestoreAndContinue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2 * std::sqrt(0.1));
+  EXPECT_EQ(s.failed(), Next::RestoreAndContinue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2 * std::pow(0.1, 0.25));
+  // Converged levels square the ratio again, up to the factor of 10.
+  const Real r = std::pow(0.1, 0.25);
+  EXPECT_EQ(s.converged(1, 0.5, std::nullopt), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2 * r * r);
+  EXPECT_EQ(s.converged(1, 0.5, std::nullopt), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2 * r * r * r * r);
+  EXPECT_EQ(s.converged(1, 0.5, std::nullopt), Next::Continue);
+  EXPECT_DOUBLE_EQ(s.factor(), 1e-2 * r * r * r * r * 0.1);
+  // Retries stop once a level is within kMaxRetryRatio of the last converged one.
+  int retries = 0;
+  while (s.failed() == Next::RestoreAndContinue) ++retries;
+  EXPECT_EQ(retries, 3);  // ratios 0.1^(1/2), 0.1^(1/4), 0.1^(1/8); 0.1^(1/16) > 0.8
+}
+
+TEST(StabilisationSchedule, AFailedReleaseStepsDownByTheCurrentStep) {
+  S s;
+  s.engage();
+  s.converged(1, 0.5, std::nullopt);
+  s.failed();  // 1e-3 failed: retried at 1e-2 * sqrt(0.1)
+  const Real held = s.factor();
+  s.converged(1, 0.001, std::nullopt);  // released
+  ASSERT_TRUE(s.releasing());
+  EXPECT_EQ(s.failed(), Next::RestoreAndContinue);
+  EXPECT_DOUBLE_EQ(s.factor(), held * std::sqrt(0.1));  // the reduced step, not 10
 }
 
 TEST(StabilisationSchedule, EngagingAgainStartsOverAndDisengagingSwitchesOff) {
