@@ -14,7 +14,7 @@ void nlgeom_element(ElementType type, const MatX3& X, const ThermoElastic& mat, 
     auto svk = [&](Index k, const Mat3&, const Mat3& Fm) {
       Vec6 e = voigt_from_tensor(0.5 * (Fm.transpose() * Fm - Mat3::Identity()));
       e.tail<3>() *= 2;  // engineering shear for D
-      const Mat6 D = elasticity_matrix(points[static_cast<std::size_t>(k)].material.constants);
+      const Mat6 D = elasticity_matrix(points[static_cast<std::size_t>(k)].material);
       const Vec6 S = D * e;
       out.energy_density(k) = 0.5 * S.dot(e);
       return TotalLagrangianResponse{S, D};

@@ -35,6 +35,7 @@ void handle_tie(const Record&, DeckState&);
 
 // kw_transform.cpp
 void handle_transform(const Record&, DeckState&);
+void handle_orientation(const Record&, DeckState&);
 
 // kw_step.cpp
 void handle_step(const Record&, DeckState&);

@@ -35,6 +35,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"CONTACTPAIR", M, None, handle_contact_pair},
     {"TIE", M, None, handle_tie},
     {"TRANSFORM", M, None, handle_transform},
+    {"ORIENTATION", M, None, handle_orientation},
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},
     {"EQUATION", M, None, handle_equation},
     {"AMPLITUDE", A, None, handle_amplitude},

@@ -12,8 +12,9 @@ the FIRST check a deck breaks is its exclusion reason:
       strain and axisymmetric CPS/CPE/CAX 3, 4, 4R, 6, 8, 8R);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
       - no parameter in FORBIDDEN_PARAMETERS (USER) on any keyword;
-      - *ELASTIC and *EXPANSION: TYPE= absent or ISO (temperature tables admitted);
-      - *SOLID SECTION: no ORIENTATION=;
+      - *ELASTIC: TYPE= absent, ISO, ORTHO, ENGINEERING CONSTANTS or ANISO; *EXPANSION: TYPE=
+        absent or ISO (temperature tables admitted);
+      - *SOLID SECTION: ORIENTATION= admitted (*ORIENTATION is a supported keyword);
       - *INITIAL CONDITIONS: TYPE=TEMPERATURE only;
       - *BOUNDARY: first and last dof within 1-3; *CLOAD: dof within 1-3;
       - *DLOAD: load label P1-P6 (face pressures), GRAV or CENTRIF (body loads) only;
@@ -81,8 +82,9 @@ SUPPORTED_KEYWORDS = {
     "EXPANSION", "SOLID SECTION", "INITIAL CONDITIONS", "TEMPERATURE", "BOUNDARY", "CLOAD",
     "DLOAD", "EQUATION", "AMPLITUDE", "STEP", "STATIC", "END STEP", "NODE PRINT", "EL PRINT",
     "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT", "CONTROLS",
-    "TRANSFORM",
+    "TRANSFORM", "ORIENTATION",
 }
+ELASTIC_TYPES = ("ISO", "ORTHO", "ENGINEERINGCONSTANTS", "ANISO")  # as ccx: by first characters
 FORBIDDEN_PARAMETERS = {"USER"}
 CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
                     "CONTACT FILE", "CONTACT OUTPUT", "FRICTION", "CHANGE FRICTION",
@@ -316,10 +318,9 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
         if forbidden:
             return f"*{keyword}, {sorted(forbidden)[0]}"
         if keyword in ("ELASTIC", "EXPANSION"):
-            if params.get("TYPE", "ISO").upper() not in ("ISO", "ISOTROPIC"):
+            types = ELASTIC_TYPES if keyword == "ELASTIC" else ("ISO",)
+            if not params.get("TYPE", "ISO").upper().replace(" ", "").startswith(types):
                 return f"*{keyword}, TYPE={params['TYPE'].upper()}"
-        elif keyword == "SOLID SECTION" and "ORIENTATION" in params:
-            return "*SOLID SECTION, ORIENTATION"
         elif keyword == "INITIAL CONDITIONS" and params.get("TYPE", "").upper() != "TEMPERATURE":
             return f"*INITIAL CONDITIONS, TYPE={params.get('TYPE', '?').upper()}"
         elif keyword in ("BOUNDARY", "CLOAD"):
