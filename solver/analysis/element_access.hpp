@@ -42,6 +42,7 @@ inline element::ThermoElastic element_material(const model::Model& model,
   element::ThermoElastic m;
   m.elastic = mat.elastic;
   m.anisotropic = mat.anisotropic;
+  m.hyperelastic = mat.hyperelastic;
   const auto& orientation = model.sections[el.section].orientation;
   if (orientation && !mat.anisotropic.empty()) {  // an isotropic material has no frame
     m.frame = [t = orientation->frame](const Vec3& x) { return model::local_frame(t, x); };

@@ -14,13 +14,13 @@ PointElastic ThermoElastic::at(Real T0, Real dT, const Vec3& x) const {
   const Real T = T0 + dT;
   PointElastic p;
   p.temperature = T;
-  if (anisotropic.empty()) {
+  if (!anisotropic.empty()) {
+    const Mat6 local = material::anisotropic_stiffness(anisotropic.at(T));
+    p.stiffness = frame ? material::rotate_stiffness(local, frame(x)) : local;
+  } else if (!elastic.empty()) {  // empty for a hyperelastic material
     const auto [young, poisson] = elastic.at(T);
     p.constants.young = young;
     p.constants.poisson = poisson;
-  } else {
-    const Mat6 local = material::anisotropic_stiffness(anisotropic.at(T));
-    p.stiffness = frame ? material::rotate_stiffness(local, frame(x)) : local;
   }
   if (expansion.empty()) return p;
   p.constants.expansion = expansion.at(T)[0];

@@ -8,6 +8,7 @@
 
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "material/hyperelastic.hpp"
 #include "material/temperature_table.hpp"
 
 namespace kontakt::element {
@@ -42,6 +43,8 @@ struct ThermoElastic {
   material::TemperatureTable<21> anisotropic;
   /// The material frame at a point x (columns: local axes); empty: the global axes.
   std::function<Mat3(const Vec3& x)> frame;
+  /// Hyperelastic instead (elastic and anisotropic empty): total Lagrangian kernels only.
+  std::optional<material::HyperelasticPolynomial> hyperelastic;
   MatX3 coords;  ///< the element's nodes, where `frame` is evaluated from (with frame only)
   material::TemperatureTable<1> expansion;  ///< secant alpha rows; empty: no thermal strain
   Real expansion_zero = 0;

@@ -25,6 +25,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"SURFACE", M, None, handle_surface},
     {"MATERIAL", M, Mat, handle_material},
     {"ELASTIC", M, Mat, handle_elastic},
+    {"HYPERELASTIC", M, Mat, handle_hyperelastic},
     {"DENSITY", M, Mat, handle_density},
     {"PLASTIC", M, Mat, handle_plastic},
     {"EXPANSION", M, Mat, handle_expansion},

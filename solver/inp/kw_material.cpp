@@ -1,9 +1,10 @@
-// *MATERIAL, *ELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION, *ORIENTATION.
+// *MATERIAL, *ELASTIC, *HYPERELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION, *ORIENTATION.
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 #include "material/anisotropic_elastic.hpp"
+#include "material/hyperelastic.hpp"
 
 #include "inp/keyword_handlers.hpp"
 #include "inp/record_access.hpp"
@@ -118,6 +119,54 @@ void handle_elastic(const Record& record, DeckState& state) {
   } else {
     fail(record, "TYPE=" + type + ": expected ISO, ORTHO, ENGINEERING CONSTANTS or ANISO");
   }
+}
+
+void handle_hyperelastic(const Record& record, DeckState& state) {
+  // The model is a parameter without value (ccx's default: POLYNOMIAL, N=1).
+  check_params(record, {"NEOHOOKE", "MOONEY-RIVLIN", "POLYNOMIAL", "REDUCEDPOLYNOMIAL", "YEOH",
+                        "N"});
+  const bool neo_hooke = has_param(record, "NEOHOOKE"), mooney = has_param(record, "MOONEY-RIVLIN");
+  const bool reduced = has_param(record, "REDUCEDPOLYNOMIAL") || has_param(record, "YEOH");
+  if (neo_hooke + mooney + reduced + has_param(record, "POLYNOMIAL") > 1)
+    fail(record, "more than one model given");
+  int n = int_param(record, "N").value_or(1);
+  if (has_param(record, "YEOH")) n = 3;
+  if ((neo_hooke || mooney) && n != 1) fail(record, "N=" + std::to_string(n) + ": this model has N=1");
+  if (n < 1 || n > 3) fail(record, "N=" + std::to_string(n) + ": expected 1, 2 or 3");
+  // The constants in ccx's order: the C_ij by order (i descending within an order; only C_i0
+  // for the reduced forms), then D_1..D_N; 8 a line, the temperature after the last.
+  std::vector<std::pair<int, int>> c_terms;
+  for (int order = 1; order <= n; ++order)
+    for (int i = order; i >= 0; --i)
+      if (!(reduced || neo_hooke) || i == order) c_terms.emplace_back(i, order - i);
+  if (neo_hooke) c_terms = {{1, 0}};
+  const std::size_t n_constants = c_terms.size() + static_cast<std::size_t>(n);
+  std::vector<Real> values;
+  if (record.lines.empty()) fail(record, "data line missing");
+  for (const DataLine& line : record.lines)
+    for (std::size_t i = 0; i < line.fields.size(); ++i)
+      values.push_back(real_field_or(record, line, i, 0));
+  if (values.size() < n_constants || values.size() > n_constants + 1 ||
+      record.lines.size() != (n_constants + 8) / 8)
+    fail(record, record.lines.back(),
+         std::to_string(n_constants) + " constants expected (8 a line), then the temperature: "
+                                       "one temperature only (no table)");
+  material::HyperelasticPolynomial p;
+  for (std::size_t k = 0; k < c_terms.size(); ++k)
+    p.c[static_cast<std::size_t>(c_terms[k].first)][static_cast<std::size_t>(c_terms[k].second)] =
+        values[k];
+  for (int k = 0; k < n; ++k) {
+    const Real d = values[c_terms.size() + static_cast<std::size_t>(k)];
+    if (k == 0 && !(d > 0))
+      fail(record, record.lines.back(), "D1 must be positive (a fully incompressible material is "
+                                        "not supported)");
+    p.d[static_cast<std::size_t>(k)] = d;
+  }
+  // Stable at rest: shear modulus 2 (C10 + C01) > 0.
+  if (!(p.c[1][0] + p.c[0][1] > 0))
+    fail(record, record.lines.front(), "C10 + C01 (half the shear modulus) must be positive");
+  model::Material& material = current_material(record, state);
+  material.hyperelastic = p;
 }
 
 void handle_plastic(const Record& record, DeckState& state) {

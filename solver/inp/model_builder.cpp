@@ -220,6 +220,17 @@ void assign_sections(DeckState& state) {
       throw InputError(raw.where, "*SOLID SECTION",
                        "material " + raw.material + " has no *ELASTIC constants");
     }
+    if (mat.hyperelastic && (!mat.plastic.empty() || !mat.elastic.empty() ||
+                             !mat.anisotropic.empty()))
+      throw InputError(mat.where, "*MATERIAL",
+                       "material " + mat.name + ": *HYPERELASTIC stands alone here (no *ELASTIC, "
+                                                "no *PLASTIC)");
+    if (mat.hyperelastic) {  // the linear kernels have no hyperelastic law
+      for (const model::Step& step : model.steps)
+        if (!step.nlgeom)
+          throw InputError(step.where, "*STEP",
+                           "material " + mat.name + " is hyperelastic: every step needs NLGEOM");
+    }
     if (!mat.anisotropic.empty() && !mat.plastic.empty())
       throw InputError(mat.where, "*MATERIAL",
                        "material " + mat.name + ": *PLASTIC needs an isotropic *ELASTIC "
@@ -249,11 +260,12 @@ void assign_sections(DeckState& state) {
       }
       // C3D8R's hourglass stiffness is scaled by Young's modulus, which an anisotropic
       // material does not have (ccx's choice for it is not known here).
-      if (element.type == element::ElementType::C3D8R && !mat.anisotropic.empty())
+      if (element.type == element::ElementType::C3D8R &&
+          (!mat.anisotropic.empty() || mat.hyperelastic))
         throw InputError(raw.where, "*SOLID SECTION",
                          "element " + std::to_string(element.id) +
-                             " is a C3D8R: its hourglass control needs an isotropic material, "
-                             "and " + mat.name + " is orthotropic or anisotropic");
+                             " is a C3D8R: its hourglass control needs an isotropic *ELASTIC, "
+                             "and " + mat.name + " is orthotropic, anisotropic or hyperelastic");
       element.section = section;
     }
   }

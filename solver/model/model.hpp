@@ -13,6 +13,7 @@
 #include "core/types.hpp"
 #include "element/element_type.hpp"
 #include "material/hardening_curves.hpp"
+#include "material/hyperelastic.hpp"
 #include "material/temperature_table.hpp"
 #include "model/contact.hpp"
 #include "model/local_frame.hpp"
@@ -94,6 +95,8 @@ struct Material {
   /// *ELASTIC, TYPE=ORTHO / ENGINEERING CONSTANTS / ANISO: the 21 D_IJKL of ccx's ANISO order
   /// (material/anisotropic_elastic) per temperature, in the material frame; empty: isotropic.
   material::TemperatureTable<21> anisotropic;
+  /// *HYPERELASTIC (polynomial family, one temperature): instead of *ELASTIC; NLGEOM only.
+  std::optional<material::HyperelasticPolynomial> hyperelastic;
   material::TemperatureTable<1> density;    ///< *DENSITY per temperature
   material::TemperatureTable<1> expansion;  ///< *EXPANSION, isotropic secant coefficient
   Real expansion_zero = 0;                  ///< *EXPANSION, ZERO= reference temperature
@@ -101,7 +104,9 @@ struct Material {
   material::HardeningCurves plastic;
   SourceLoc where;
 
-  bool has_elastic() const { return !elastic.empty() || !anisotropic.empty(); }
+  bool has_elastic() const {
+    return !elastic.empty() || !anisotropic.empty() || hyperelastic.has_value();
+  }
 };
 
 struct SolidSection {

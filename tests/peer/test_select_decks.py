@@ -99,6 +99,17 @@ class SelectDecks(unittest.TestCase):
                 text = plastic.replace(old, new, 1)
                 self.assertEqual(exclusion_reason(self.deck(text), nlgeom=True), reason)
 
+    def test_nonlinear_set_admits_polynomial_hyperelasticity_without_pressure(self):
+        nl = GOOD.replace("*STEP\n", "*STEP, NLGEOM\n")
+        hyper = nl.replace("*ELASTIC\n210000, 0.3\n", "*HYPERELASTIC, NEO HOOKE\n1.9, 0.026\n")
+        self.assertEqual(exclusion_reason(self.deck(hyper), nlgeom=True),
+                         "*HYPERELASTIC with *DLOAD")
+        unloaded = hyper.replace("*DLOAD\nEALL, P2, 1.\n", "")
+        self.assertIsNone(exclusion_reason(self.deck(unloaded), nlgeom=True))
+        ogden = unloaded.replace("NEO HOOKE", "OGDEN, N=1")
+        self.assertEqual(exclusion_reason(self.deck(ogden), nlgeom=True), "*HYPERELASTIC, OGDEN")
+        self.assertEqual(exclusion_reason(self.deck(unloaded)), "keyword *HYPERELASTIC")
+
     def test_nothing_printed(self):
         text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")
         self.assertEqual(exclusion_reason(self.deck(text)), "no *NODE PRINT / *EL PRINT")

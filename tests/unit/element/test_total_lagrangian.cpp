@@ -77,6 +77,18 @@ TEST_P(TotalLagrangian, TangentOfAnAnisotropicMaterialInAVaryingFrame) {
   check_tangent(type(), X(), mat, displacement(), VecX());
 }
 
+TEST_P(TotalLagrangian, TangentOfAHyperelasticMaterial) {
+  if (type() == ElementType::C3D8R) GTEST_SKIP() << "refused by the reader";
+  ThermoElastic mat;
+  material::HyperelasticPolynomial p;
+  p.c[1][0] = 300;
+  p.c[0][1] = 80;
+  p.c[1][1] = 20;
+  p.d = {0.002, 0.01, 0};
+  mat.hyperelastic = p;
+  check_tangent(type(), X(), mat, displacement(), VecX());
+}
+
 TEST_P(TotalLagrangian, FreeThermalExpansionByOnePlusAlphaDTIsStressFree) {
   // ccx 2.20 expands a free NLGEOM body by exactly 1 + alpha dT (measured); the Green-Lagrange
   // strain then is ((1 + a)^2 - 1) / 2, not a.

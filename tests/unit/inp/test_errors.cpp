@@ -17,9 +17,9 @@ std::vector<BadDeck> bad_decks() {
   return {
       {"unsupported keyword", model_plus("*MPC\nBEAM, 1, 2\n"), 27, "*MPC",
        "keyword not supported"},
-      {"hyperelastic unsupported",
-       model_plus("*MATERIAL, NAME=P\n*ELASTIC\n1,0\n*HYPERELASTIC\n1,0\n"), 30,
-       "*HYPERELASTIC", "not supported"},
+      {"hyperelastic ogden unsupported",
+       model_plus("*MATERIAL, NAME=P\n*ELASTIC\n1,0\n*HYPERELASTIC, OGDEN\n1,0\n"), 30,
+       "*HYPERELASTIC", "OGDEN"},
       {"frequency procedure", model_plus("*STEP\n*FREQUENCY\n10\n*END STEP\n"), 28,
        "*FREQUENCY", "not supported"},
       {"unsupported element", "*NODE\n1,0,0,0\n*ELEMENT, TYPE=S8R, ELSET=E\n1, 1\n", 3,

@@ -90,7 +90,7 @@ std::vector<BadDeck> material_bad_decks() {
        plus("*ELEMENT, TYPE=C3D8R, ELSET=R\n3, 2, 9, 10, 3, 6, 11, 12, 7\n*MATERIAL, NAME=T\n"
             "*ELASTIC, TYPE=ORTHO\n1, 0, 1, 0, 0, 1, 1, 1\n1\n*SOLID SECTION, ELSET=R, "
             "MATERIAL=T\n"),
-       33, "*SOLID SECTION", "hourglass control needs an isotropic material"},
+       33, "*SOLID SECTION", "hourglass control needs an isotropic *ELASTIC"},
       {"orientation unknown system", plus("*ORIENTATION, NAME=O, SYSTEM=SPHERICAL\n0,0,0,1,0,0\n"),
        27, "*ORIENTATION", "SYSTEM=SPHERICAL: expected RECTANGULAR or CYLINDRICAL"},
       {"orientation a at the origin", plus("*ORIENTATION, NAME=O\n0,0,0,1,0,0\n"), 28,
@@ -101,6 +101,25 @@ std::vector<BadDeck> material_bad_decks() {
       {"orientation twice",
        plus("*ORIENTATION, NAME=O\n1,0,0,0,1,0\n*ORIENTATION, NAME=O\n1,0,0,0,1,0\n"), 29,
        "*ORIENTATION", "orientation O defined twice"},
+      {"hyperelastic unknown model", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, ARRUDA-BOYCE\n1, 1, 1\n"),
+       28, "*HYPERELASTIC", "ARRUDA-BOYCE"},
+      {"hyperelastic D1 zero", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, NEO HOOKE\n1., 0.\n"), 29,
+       "*HYPERELASTIC", "D1 must be positive"},
+      {"hyperelastic constants missing",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, MOONEY-RIVLIN\n1., .03\n"), 29, "*HYPERELASTIC",
+       "3 constants expected"},
+      {"hyperelastic order 4", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, POLYNOMIAL, N=4\n1, 1\n"),
+       28, "*HYPERELASTIC", "N=4: expected 1, 2 or 3"},
+      {"hyperelastic unstable", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, MOONEY-RIVLIN\n1., -2., .1\n"),
+       29, "*HYPERELASTIC", "C10 + C01"},
+      {"hyperelastic without NLGEOM",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC\n1., 0., .1\n*SOLID SECTION, ELSET=EALL, "
+            "MATERIAL=T\n*STEP\n*STATIC\n*END STEP\n"),
+       31, "*STEP", "every step needs NLGEOM"},
+      {"hyperelastic with elastic",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3\n*HYPERELASTIC, NEO HOOKE\n1., .1\n"
+            "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n"),
+       27, "*MATERIAL", "*HYPERELASTIC stands alone"},
       {"orientation second line", plus("*ORIENTATION, NAME=O\n1,0,0,0,1,0\n3, 10.\n"), 29,
        "*ORIENTATION", "data line"},
   };
