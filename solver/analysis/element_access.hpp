@@ -23,7 +23,7 @@ inline const model::Material& element_material_def(const model::Model& model,
 /// with the temperature field and cannot be reused across temperatures).
 inline bool any_temperature_dependent_stiffness(const model::Model& model) {
   for (const auto& m : model.materials)
-    if (m.elastic.rows.size() > 1) return true;
+    if (m.elastic.rows.size() > 1 || m.anisotropic.rows.size() > 1) return true;
   return false;
 }
 
@@ -41,6 +41,13 @@ inline element::ThermoElastic element_material(const model::Model& model,
   const auto& mat = element_material_def(model, el);
   element::ThermoElastic m;
   m.elastic = mat.elastic;
+  m.anisotropic = mat.anisotropic;
+  m.hyperelastic = mat.hyperelastic;
+  const auto& orientation = model.sections[el.section].orientation;
+  if (orientation && !mat.anisotropic.empty()) {  // an isotropic material has no frame
+    m.frame = [t = orientation->frame](const Vec3& x) { return model::local_frame(t, x); };
+    m.coords = element_coords(model, el);
+  }
   m.expansion = mat.expansion;
   m.expansion_zero = mat.expansion_zero;
   if (model.initial_temperatures.size()) {

@@ -65,7 +65,7 @@ Blocks integrate(const MatX3& X, const ThermoElastic& mat, const VecX& dT) {
     const GMatrix G = g_matrix(c, q.xi, g.detJ);
     const Real dv = q.weight * g.detJ;
     const PointElastic m = point_material(mat, ElementType::C3D8I, q.xi, g.N, dT);
-    const Mat6 D = elasticity_matrix(m.constants);
+    const Mat6 D = elasticity_matrix(m);
     k.Kuu.noalias() += dv * (B.transpose() * D * B);
     k.Kua.noalias() += dv * (B.transpose() * D * G);
     k.Kaa.noalias() += dv * (G.transpose() * D * G);

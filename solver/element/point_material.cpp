@@ -1,6 +1,7 @@
 // The thermo-elastic material of an integration point: tables evaluated at its temperature.
 #include "element/solid_kernels.hpp"
 #include "element/solid_linear.hpp"
+#include "material/anisotropic_elastic.hpp"
 
 namespace kontakt::element {
 
@@ -9,10 +10,18 @@ ThermoElastic::ThermoElastic(const LinearElastic& constant) {
   if (constant.expansion != 0) expansion.add(0, {constant.expansion});
 }
 
-PointElastic ThermoElastic::at(Real T0, Real dT) const {
+PointElastic ThermoElastic::at(Real T0, Real dT, const Vec3& x) const {
   const Real T = T0 + dT;
-  const auto [young, poisson] = elastic.at(T);
-  PointElastic p{{young, poisson, 0}, 0, T};
+  PointElastic p;
+  p.temperature = T;
+  if (!anisotropic.empty()) {
+    const Mat6 local = material::anisotropic_stiffness(anisotropic.at(T));
+    p.stiffness = frame ? material::rotate_stiffness(local, frame(x)) : local;
+  } else if (!elastic.empty()) {  // empty for a hyperelastic material
+    const auto [young, poisson] = elastic.at(T);
+    p.constants.young = young;
+    p.constants.poisson = poisson;
+  }
   if (expansion.empty()) return p;
   p.constants.expansion = expansion.at(T)[0];
   // A table's secant coefficient refers to ZERO; one row is the same coefficient at every T.
@@ -25,8 +34,11 @@ PointElastic ThermoElastic::at(Real T0, Real dT) const {
 
 PointElastic point_material(const ThermoElastic& mat, ElementType type, const Vec3& xi,
                             const ShapeVec& N, const VecX& dT) {
+  // The point's position matters only to a frame that varies (cylindrical orientation).
+  const Vec3 x = mat.frame ? Vec3(mat.coords.transpose() * N.head(mat.coords.rows()))
+                           : Vec3::Zero();
   return mat.at(point_temperature(type, xi, N, mat.initial_temperature),
-                point_temperature(type, xi, N, dT));
+                point_temperature(type, xi, N, dT), x);
 }
 
 }  // namespace kontakt::element

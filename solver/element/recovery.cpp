@@ -52,7 +52,7 @@ void recover(ElementType type, const MatX3& X, const ThermoElastic& mat, const M
     hourglass_modulus = m.constants.young;
     const Vec6 e = eps.row(k).transpose();
     const Vec6 e_el = e - thermal_strain(m);
-    const Vec6 s = elasticity_matrix(m.constants) * e_el;
+    const Vec6 s = elasticity_matrix(m) * e_el;
     out.stress.row(k) = s.transpose();
     out.strain.row(k) = tensor_strain(e).transpose();
     out.energy_density(k) = 0.5 * s.dot(e_el);

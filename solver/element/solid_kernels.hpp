@@ -21,8 +21,8 @@ struct PointGeometry {
   Real detJ = 0;
 };
 
-/// Isotropic elasticity matrix for engineering shear strains.
-Mat6 elasticity_matrix(const LinearElastic& mat);
+/// Elasticity matrix for engineering shear strains (the anisotropic stiffness where set).
+Mat6 elasticity_matrix(const PointElastic& point);
 
 /// Geometry at natural point xi; throws SolverError for a non-positive Jacobian.
 PointGeometry point_geometry(Topology topo, const MatX3& X, const Vec3& xi);

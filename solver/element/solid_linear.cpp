@@ -10,8 +10,9 @@
 
 namespace kontakt::element {
 
-Mat6 elasticity_matrix(const LinearElastic& mat) {
-  const Real E = mat.young, nu = mat.poisson;
+Mat6 elasticity_matrix(const PointElastic& point) {
+  if (point.stiffness) return *point.stiffness;
+  const Real E = point.constants.young, nu = point.constants.poisson;
   const Real lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   Mat6 D = Mat6::Zero();
   D.topLeftCorner<3, 3>().setConstant(lambda);
@@ -88,7 +89,7 @@ void linear_stiffness(ElementType type, const MatX3& X, const ThermoElastic& mat
     const PointGeometry g = rule_point_geometry(type, X, q.xi);
     const PointElastic m = point_material(mat, type, q.xi, g.N, dT);
     b_matrix(g.dNdx, B);
-    K.noalias() += (q.weight * g.detJ) * (B.transpose() * elasticity_matrix(m.constants) * B);
+    K.noalias() += (q.weight * g.detJ) * (B.transpose() * elasticity_matrix(m) * B);
     hourglass_modulus = m.constants.young;
   }
   if (type == ElementType::C3D8R) {
@@ -112,7 +113,7 @@ void thermal_load(ElementType type, const MatX3& X, const ThermoElastic& mat, co
     const PointGeometry g = rule_point_geometry(type, X, q.xi);
     b_matrix(g.dNdx, B);
     const PointElastic m = point_material(mat, type, q.xi, g.N, dT);
-    const Vec6 sigma_th = elasticity_matrix(m.constants) * thermal_strain(m);
+    const Vec6 sigma_th = elasticity_matrix(m) * thermal_strain(m);
     f.noalias() += (q.weight * g.detJ) * (B.transpose() * sigma_th);
   }
 }

@@ -3,8 +3,12 @@
 // xx, yy, zz, xy, xz, yz; strains are reported as tensor components (eps_xy, not gamma_xy).
 #pragma once
 
+#include <functional>
+#include <optional>
+
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "material/hyperelastic.hpp"
 #include "material/temperature_table.hpp"
 
 namespace kontakt::element {
@@ -22,6 +26,9 @@ struct PointElastic {
   LinearElastic constants;
   Real thermal_strain = 0;
   Real temperature = 0;  ///< initial + change (what temperature-dependent hardening is read at)
+  /// Set for an orthotropic / anisotropic material: its stiffness in global components
+  /// (engineering shear); constants.young and poisson are then unused.
+  std::optional<Mat6> stiffness;
 };
 
 /// An element's isotropic thermo-elastic material: *ELASTIC and *EXPANSION tables evaluated at
@@ -31,6 +38,14 @@ struct PointElastic {
 /// secant coefficient (a constant alpha gives alpha dT whatever Z).
 struct ThermoElastic {
   material::TemperatureTable<2> elastic;    ///< (E, nu) rows
+  /// Orthotropic / anisotropic instead (elastic empty): the 21 constants in the material frame
+  /// (material/anisotropic_elastic), rotated to global components at each point.
+  material::TemperatureTable<21> anisotropic;
+  /// The material frame at a point x (columns: local axes); empty: the global axes.
+  std::function<Mat3(const Vec3& x)> frame;
+  /// Hyperelastic instead (elastic and anisotropic empty): total Lagrangian kernels only.
+  std::optional<material::HyperelasticPolynomial> hyperelastic;
+  MatX3 coords;  ///< the element's nodes, where `frame` is evaluated from (with frame only)
   material::TemperatureTable<1> expansion;  ///< secant alpha rows; empty: no thermal strain
   Real expansion_zero = 0;
   VecX initial_temperature;  ///< the element's nodal initial temperatures (empty: 0)
@@ -38,8 +53,9 @@ struct ThermoElastic {
   ThermoElastic() = default;
   /// A constant material (what a deck without temperature columns gives).
   ThermoElastic(const LinearElastic& constant);  // NOLINT(google-explicit-constructor)
-  /// The material of a point at initial temperature T0 heated by dT.
-  PointElastic at(Real T0, Real dT) const;
+  /// The material of a point at x (read by a varying frame only), initial temperature T0,
+  /// heated by dT.
+  PointElastic at(Real T0, Real dT, const Vec3& x = Vec3::Zero()) const;
 };
 
 /// Element stiffness K (3n x 3n) for nodal coordinates X (n x 3, ccx local node order) at the

@@ -11,15 +11,21 @@ void nlgeom_element(ElementType type, const MatX3& X, const ThermoElastic& mat, 
                     VecX& f, MatX& K, HourglassModulus* hourglass) {
     if (hourglass) hourglass->value = points.front().material.constants.young;
     out.energy_density.resize(static_cast<Index>(points.size()));
-    auto svk = [&](Index k, const Mat3&, const Mat3& Fm) {
+    auto law = [&](Index k, const Mat3&, const Mat3& Fm) {
+      if (mat.hyperelastic) {
+        const material::HyperelasticResponse r =
+            material::polynomial_hyperelastic(*mat.hyperelastic, Fm.transpose() * Fm);
+        out.energy_density(k) = r.energy;
+        return TotalLagrangianResponse{r.stress, r.tangent};
+      }
       Vec6 e = voigt_from_tensor(0.5 * (Fm.transpose() * Fm - Mat3::Identity()));
       e.tail<3>() *= 2;  // engineering shear for D
-      const Mat6 D = elasticity_matrix(points[static_cast<std::size_t>(k)].material.constants);
+      const Mat6 D = elasticity_matrix(points[static_cast<std::size_t>(k)].material);
       const Vec6 S = D * e;
       out.energy_density(k) = 0.5 * S.dot(e);
       return TotalLagrangianResponse{S, D};
     };
-    integrate_total_lagrangian(points, values, tangent, svk, f, K, out.cauchy,
+    integrate_total_lagrangian(points, values, tangent, law, f, K, out.cauchy,
                                out.green_lagrange);
   };
   run_point_kernel(type, X, mat, u, dT, modes_start, want_tangent, kernel, out.internal_force,

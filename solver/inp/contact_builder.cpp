@@ -25,7 +25,10 @@ Real first_young(const DeckState& state, const SourceLoc& where, const std::stri
                                             "deck has no *MATERIAL");
   if (materials.front().elastic.empty())
     throw InputError(where, keyword, what + " needs the first material's Young's modulus; " +
-                                         materials.front().name + " has no *ELASTIC");
+                                         materials.front().name +
+                                         (materials.front().anisotropic.empty()
+                                              ? " has no *ELASTIC"
+                                              : " is not isotropic (*ELASTIC, TYPE=ISO)"));
   return materials.front().elastic.rows.front()[0];  // ccx: the first row of a table
 }
 

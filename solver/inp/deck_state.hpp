@@ -48,6 +48,7 @@ struct RawSection {
   SourceLoc where;
   Real thickness = 1;
   Real offset = 0;
+  std::string orientation;  ///< ORIENTATION= name; empty: none
 };
 
 /// Where the cards of a *SURFACE INTERACTION block were, for the end-of-deck resolution
@@ -118,6 +119,7 @@ struct DeckState {
   std::map<std::string, RawSurface> surfaces;
   std::vector<RawSection> sections;
   std::map<std::string, int> material_index;
+  std::map<std::string, model::Orientation> orientations;  ///< *ORIENTATION by name
   std::map<std::string, int> amplitude_index;
   std::map<std::string, int> interaction_index;
   std::vector<RawInteraction> raw_interactions;  ///< parallel to model.interactions

@@ -17,6 +17,7 @@ void handle_surface(const Record&, DeckState&);
 // kw_material.cpp
 void handle_material(const Record&, DeckState&);
 void handle_elastic(const Record&, DeckState&);
+void handle_hyperelastic(const Record&, DeckState&);
 void handle_plastic(const Record&, DeckState&);
 void handle_density(const Record&, DeckState&);
 void handle_expansion(const Record&, DeckState&);
@@ -35,6 +36,7 @@ void handle_tie(const Record&, DeckState&);
 
 // kw_transform.cpp
 void handle_transform(const Record&, DeckState&);
+void handle_orientation(const Record&, DeckState&);
 
 // kw_step.cpp
 void handle_step(const Record&, DeckState&);

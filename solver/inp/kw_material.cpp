@@ -1,6 +1,10 @@
-// *MATERIAL, *ELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION.
+// *MATERIAL, *ELASTIC, *HYPERELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION, *ORIENTATION.
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+
+#include "material/anisotropic_elastic.hpp"
+#include "material/hyperelastic.hpp"
 
 #include "inp/keyword_handlers.hpp"
 #include "inp/record_access.hpp"
@@ -49,17 +53,120 @@ void handle_material(const Record& record, DeckState& state) {
   state.model.materials.push_back(std::move(material));
 }
 
+namespace {
+
+/// The constants of the orthotropic and anisotropic types: sets of `n_lines` data lines (8
+/// constants on every line but the last, which ends with the optional temperature), N constants
+/// per set, one set per temperature; each set converted to the 21 ANISO constants by `convert`
+/// (which throws std::invalid_argument for bad constants) and required positive definite.
+template <std::size_t N, class Convert>
+material::TemperatureTable<21> anisotropic_table(const Record& record, std::size_t n_lines,
+                                                 Convert convert) {
+  if (record.lines.empty()) fail(record, "data line missing");
+  if (record.lines.size() % n_lines != 0)
+    fail(record, record.lines.back(),
+         std::to_string(N) + " constants take " + std::to_string(n_lines) +
+             " data lines per temperature (8 a line, the temperature after the last)");
+  material::TemperatureTable<21> table;
+  for (std::size_t first = 0; first < record.lines.size(); first += n_lines) {
+    std::array<Real, N> constants{};
+    std::size_t k = 0;
+    for (std::size_t l = 0; l < n_lines; ++l) {
+      const DataLine& line = record.lines[first + l];
+      const std::size_t on_line = l + 1 < n_lines ? 8 : N - 8 * (n_lines - 1);
+      require_field_count(record, line, on_line, l + 1 < n_lines ? on_line : on_line + 1);
+      for (std::size_t i = 0; i < on_line; ++i) constants[k++] = real_field(record, line, i);
+    }
+    const DataLine& last = record.lines[first + n_lines - 1];
+    const Real temperature = real_field_or(record, last, N - 8 * (n_lines - 1), 0);
+    if (!table.empty() && !(temperature > table.temperatures.back()))
+      fail(record, last, "temperatures must increase from set to set (a table by temperature)");
+    material::AnisotropicConstants d{};
+    try {
+      d = convert(constants);
+    } catch (const std::invalid_argument& e) {
+      fail(record, last, e.what());
+    }
+    if (!material::is_positive_definite(material::anisotropic_stiffness(d)))
+      fail(record, last, "the elasticity matrix is not positive definite");
+    table.add(temperature, d);
+  }
+  return table;
+}
+
+}  // namespace
+
 void handle_elastic(const Record& record, DeckState& state) {
   check_params(record, {"TYPE"});
+  // ccx compares the first characters of the value: ORTHO(TROPIC), ANISO(TROPIC), ...
   const std::string type = name_value(record, "TYPE").value_or("ISO");
-  if (type != "ISO" && type != "ISOTROPIC") {
-    fail(record, "TYPE=" + type + " is not supported (only TYPE=ISO)");
-  }
   model::Material& material = current_material(record, state);
-  material.elastic = temperature_table<2>(record, [&](const DataLine& line, const auto& row) {
-    if (!(row[0] > 0)) fail(record, line, "Young's modulus must be positive");
-    if (!(row[1] > -1 && row[1] < 0.5)) fail(record, line, "Poisson's ratio must lie in (-1, 0.5)");
-  });
+  material.elastic = {};
+  material.anisotropic = {};
+  if (type.starts_with("ISO")) {
+    material.elastic = temperature_table<2>(record, [&](const DataLine& line, const auto& row) {
+      if (!(row[0] > 0)) fail(record, line, "Young's modulus must be positive");
+      if (!(row[1] > -1 && row[1] < 0.5))
+        fail(record, line, "Poisson's ratio must lie in (-1, 0.5)");
+    });
+  } else if (type.starts_with("ORTHO")) {
+    material.anisotropic = anisotropic_table<9>(record, 2, material::from_orthotropic);
+  } else if (type.starts_with("ENGINEERINGCONSTANTS")) {
+    material.anisotropic = anisotropic_table<9>(record, 2, material::from_engineering);
+  } else if (type.starts_with("ANISO")) {
+    material.anisotropic =
+        anisotropic_table<21>(record, 3, [](const material::AnisotropicConstants& d) { return d; });
+  } else {
+    fail(record, "TYPE=" + type + ": expected ISO, ORTHO, ENGINEERING CONSTANTS or ANISO");
+  }
+}
+
+void handle_hyperelastic(const Record& record, DeckState& state) {
+  // The model is a parameter without value (ccx's default: POLYNOMIAL, N=1).
+  check_params(record, {"NEOHOOKE", "MOONEY-RIVLIN", "POLYNOMIAL", "REDUCEDPOLYNOMIAL", "YEOH",
+                        "N"});
+  const bool neo_hooke = has_param(record, "NEOHOOKE"), mooney = has_param(record, "MOONEY-RIVLIN");
+  const bool reduced = has_param(record, "REDUCEDPOLYNOMIAL") || has_param(record, "YEOH");
+  if (neo_hooke + mooney + reduced + has_param(record, "POLYNOMIAL") > 1)
+    fail(record, "more than one model given");
+  int n = int_param(record, "N").value_or(1);
+  if (has_param(record, "YEOH")) n = 3;
+  if ((neo_hooke || mooney) && n != 1) fail(record, "N=" + std::to_string(n) + ": this model has N=1");
+  if (n < 1 || n > 3) fail(record, "N=" + std::to_string(n) + ": expected 1, 2 or 3");
+  // The constants in ccx's order: the C_ij by order (i descending within an order; only C_i0
+  // for the reduced forms), then D_1..D_N; 8 a line, the temperature after the last.
+  std::vector<std::pair<int, int>> c_terms;
+  for (int order = 1; order <= n; ++order)
+    for (int i = order; i >= 0; --i)
+      if (!(reduced || neo_hooke) || i == order) c_terms.emplace_back(i, order - i);
+  if (neo_hooke) c_terms = {{1, 0}};
+  const std::size_t n_constants = c_terms.size() + static_cast<std::size_t>(n);
+  std::vector<Real> values;
+  if (record.lines.empty()) fail(record, "data line missing");
+  for (const DataLine& line : record.lines)
+    for (std::size_t i = 0; i < line.fields.size(); ++i)
+      values.push_back(real_field_or(record, line, i, 0));
+  if (values.size() < n_constants || values.size() > n_constants + 1 ||
+      record.lines.size() != (n_constants + 8) / 8)
+    fail(record, record.lines.back(),
+         std::to_string(n_constants) + " constants expected (8 a line), then the temperature: "
+                                       "one temperature only (no table)");
+  material::HyperelasticPolynomial p;
+  for (std::size_t k = 0; k < c_terms.size(); ++k)
+    p.c[static_cast<std::size_t>(c_terms[k].first)][static_cast<std::size_t>(c_terms[k].second)] =
+        values[k];
+  for (int k = 0; k < n; ++k) {
+    const Real d = values[c_terms.size() + static_cast<std::size_t>(k)];
+    if (k == 0 && !(d > 0))
+      fail(record, record.lines.back(), "D1 must be positive (a fully incompressible material is "
+                                        "not supported)");
+    p.d[static_cast<std::size_t>(k)] = d;
+  }
+  // Stable at rest: shear modulus 2 (C10 + C01) > 0.
+  if (!(p.c[1][0] + p.c[0][1] > 0))
+    fail(record, record.lines.front(), "C10 + C01 (half the shear modulus) must be positive");
+  model::Material& material = current_material(record, state);
+  material.hyperelastic = p;
 }
 
 void handle_plastic(const Record& record, DeckState& state) {
@@ -127,8 +234,7 @@ void handle_expansion(const Record& record, DeckState& state) {
 }
 
 void handle_solid_section(const Record& record, DeckState& state) {
-  if (has_param(record, "ORIENTATION")) fail(record, "ORIENTATION= is not supported");
-  check_params(record, {"ELSET", "MATERIAL", "OFFSET"});
+  check_params(record, {"ELSET", "MATERIAL", "OFFSET", "ORIENTATION"});
   // OFFSET= moves plane elements' layer off the z = 0 plane, in thicknesses (ccx).
   Real offset = 0;
   if (const auto* param = find_param(record, "OFFSET")) {
@@ -146,7 +252,38 @@ void handle_solid_section(const Record& record, DeckState& state) {
   }
   const std::string elset = remove_blanks(to_upper(required_value(record, "ELSET")));
   const std::string material = remove_blanks(to_upper(required_value(record, "MATERIAL")));
-  state.sections.push_back(RawSection{elset, material, record.where, thickness, offset});
+  const std::string orientation = name_value(record, "ORIENTATION").value_or("");
+  state.sections.push_back(
+      RawSection{elset, material, record.where, thickness, offset, orientation});
+}
+
+void handle_orientation(const Record& record, DeckState& state) {
+  check_params(record, {"NAME", "SYSTEM", "DEFINITION"});
+  const std::string name = remove_blanks(to_upper(required_value(record, "NAME")));
+  const std::string definition = name_value(record, "DEFINITION").value_or("COORDINATES");
+  if (definition != "COORDINATES")
+    fail(record, "DEFINITION=" + definition + ": only COORDINATES (two points) is supported");
+  const std::string system = name_value(record, "SYSTEM").value_or("RECTANGULAR");
+  model::Transform frame;
+  if (system == "CYLINDRICAL")
+    frame.kind = model::Transform::Kind::Cylindrical;
+  else if (system != "RECTANGULAR")
+    fail(record, "SYSTEM=" + system + ": expected RECTANGULAR or CYLINDRICAL");
+  // ccx allows a second line (an extra rotation about a local axis); not supported here.
+  require_line_count(record, 1, 1);
+  const DataLine& line = record.lines.front();
+  require_field_count(record, line, 6, 6);
+  for (int c = 0; c < 3; ++c) {
+    frame.a[c] = real_field(record, line, c);
+    frame.b[c] = real_field(record, line, 3 + c);
+  }
+  try {  // a degenerate definition is refused here (x is irrelevant to that)
+    (void)model::local_frame(frame, frame.a);
+  } catch (const std::invalid_argument& e) {
+    fail(record, line, e.what());
+  }
+  if (!state.orientations.emplace(name, model::Orientation{name, frame}).second)
+    fail(record, "orientation " + name + " defined twice");
 }
 
 }  // namespace kontakt::inp

@@ -216,24 +216,56 @@ void assign_sections(DeckState& state) {
                                                         " is not defined");
     }
     const model::Material& mat = model.materials[static_cast<std::size_t>(material->second)];
-    if (mat.elastic.empty()) {
+    if (!mat.has_elastic()) {
       throw InputError(raw.where, "*SOLID SECTION",
                        "material " + raw.material + " has no *ELASTIC constants");
     }
+    if (mat.hyperelastic && (!mat.plastic.empty() || !mat.elastic.empty() ||
+                             !mat.anisotropic.empty()))
+      throw InputError(mat.where, "*MATERIAL",
+                       "material " + mat.name + ": *HYPERELASTIC stands alone here (no *ELASTIC, "
+                                                "no *PLASTIC)");
+    if (mat.hyperelastic) {  // the linear kernels have no hyperelastic law
+      for (const model::Step& step : model.steps)
+        if (!step.nlgeom)
+          throw InputError(step.where, "*STEP",
+                           "material " + mat.name + " is hyperelastic: every step needs NLGEOM");
+    }
+    if (!mat.anisotropic.empty() && !mat.plastic.empty())
+      throw InputError(mat.where, "*MATERIAL",
+                       "material " + mat.name + ": *PLASTIC needs an isotropic *ELASTIC "
+                                                "(TYPE=ISO); orthotropic or anisotropic "
+                                                "plasticity is not supported");
     const auto elset = model.element_sets.find(raw.elset);
     if (elset == model.element_sets.end()) {
       throw InputError(raw.where, "*SOLID SECTION", "element set " + raw.elset +
                                                         " is not defined");
     }
+    std::optional<model::Orientation> orientation;
+    if (!raw.orientation.empty()) {
+      const auto found = state.orientations.find(raw.orientation);
+      if (found == state.orientations.end())
+        throw InputError(raw.where, "*SOLID SECTION",
+                         "orientation " + raw.orientation + " is not defined");
+      orientation = found->second;
+    }
     const int section = static_cast<int>(model.sections.size());
-    model.sections.push_back(
-        model::SolidSection{raw.elset, material->second, raw.where, raw.thickness, raw.offset});
+    model.sections.push_back(model::SolidSection{raw.elset, material->second, raw.where,
+                                                 raw.thickness, raw.offset, orientation});
     for (int e : elset->second.elements) {
       model::Element& element = model.mesh.elements[static_cast<std::size_t>(e)];
       if (element.section >= 0) {
         state.warn(raw.where, "*SOLID SECTION",
                    "element " + std::to_string(element.id) + " already had a section; replaced");
       }
+      // C3D8R's hourglass stiffness is scaled by Young's modulus, which an anisotropic
+      // material does not have (ccx's choice for it is not known here).
+      if (element.type == element::ElementType::C3D8R &&
+          (!mat.anisotropic.empty() || mat.hyperelastic))
+        throw InputError(raw.where, "*SOLID SECTION",
+                         "element " + std::to_string(element.id) +
+                             " is a C3D8R: its hourglass control needs an isotropic *ELASTIC, "
+                             "and " + mat.name + " is orthotropic, anisotropic or hyperelastic");
       element.section = section;
     }
   }

@@ -5,6 +5,9 @@
 
 #include <Eigen/Geometry>  // cross products
 
+#include "element/quadrature.hpp"
+#include "element/shape_functions.hpp"
+
 namespace kontakt::model {
 
 namespace {
@@ -60,6 +63,19 @@ Mat3 local_frame(const Transform& t, const Vec3& x) {
   }
   const Vec3 e1 = radial(t, x).first.normalized();
   return columns(e1, e3.cross(e1), e3);
+}
+
+std::vector<Mat3> point_frames(const Orientation& orientation, element::ElementType type,
+                               const MatX3& X) {
+  std::vector<Mat3> frames;
+  const element::Topology topo = element::volume_topology(type);
+  for (const element::QuadraturePoint& q : element::volume_rule(type)) {
+    element::ShapeVec N;
+    element::ShapeGrad dN;
+    element::shape_functions(topo, q.xi, N, dN);
+    frames.push_back(local_frame(orientation.frame, X.transpose() * N));
+  }
+  return frames;
 }
 
 }  // namespace kontakt::model

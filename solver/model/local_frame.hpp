@@ -2,7 +2,11 @@
 // *NODE PRINT output of a transformed node are in its local system.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "core/types.hpp"
+#include "element/element_type.hpp"
 
 namespace kontakt::model {
 
@@ -28,5 +32,17 @@ Mat3 local_frame(const Transform& transform, const Vec3& x);
 
 /// True when `x` lies on the axis of a cylindrical transform.
 bool on_cylinder_axis(const Transform& transform, const Vec3& x);
+
+/// An *ORIENTATION: a named material frame of the same definition (ccx), for the elements of
+/// a *SOLID SECTION.
+struct Orientation {
+  std::string name;
+  Transform frame;
+};
+
+/// The orientation's frame at each integration point of an element of `type` with nodal
+/// coordinates X (ccx evaluates a cylindrical frame at the point, so it varies in the element).
+std::vector<Mat3> point_frames(const Orientation& orientation, element::ElementType type,
+                               const MatX3& X);
 
 }  // namespace kontakt::model

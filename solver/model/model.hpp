@@ -13,8 +13,10 @@
 #include "core/types.hpp"
 #include "element/element_type.hpp"
 #include "material/hardening_curves.hpp"
+#include "material/hyperelastic.hpp"
 #include "material/temperature_table.hpp"
 #include "model/contact.hpp"
+#include "model/local_frame.hpp"
 #include "model/solution_controls.hpp"
 #include "model/tie.hpp"
 
@@ -90,12 +92,21 @@ struct Material {
   std::string name;
   /// *ELASTIC, isotropic: (E, nu) per temperature (one row: constant); empty: not given
   material::TemperatureTable<2> elastic;
+  /// *ELASTIC, TYPE=ORTHO / ENGINEERING CONSTANTS / ANISO: the 21 D_IJKL of ccx's ANISO order
+  /// (material/anisotropic_elastic) per temperature, in the material frame; empty: isotropic.
+  material::TemperatureTable<21> anisotropic;
+  /// *HYPERELASTIC (polynomial family, one temperature): instead of *ELASTIC; NLGEOM only.
+  std::optional<material::HyperelasticPolynomial> hyperelastic;
   material::TemperatureTable<1> density;    ///< *DENSITY per temperature
   material::TemperatureTable<1> expansion;  ///< *EXPANSION, isotropic secant coefficient
   Real expansion_zero = 0;                  ///< *EXPANSION, ZERO= reference temperature
   /// *PLASTIC (isotropic hardening): one curve per temperature; empty for an elastic material.
   material::HardeningCurves plastic;
   SourceLoc where;
+
+  bool has_elastic() const {
+    return !elastic.empty() || !anisotropic.empty() || hyperelastic.has_value();
+  }
 };
 
 struct SolidSection {
@@ -104,6 +115,9 @@ struct SolidSection {
   SourceLoc where;
   Real thickness = 1;             ///< data line of plane stress / strain elements (ccx default 1)
   Real offset = 0;                ///< OFFSET=: their mid-plane at z = -offset * thickness
+  /// ORIENTATION=: the material frame, in which an anisotropic material's constants are given
+  /// and *EL PRINT without GLOBAL=YES prints S and E (ccx); none: the global axes.
+  std::optional<Orientation> orientation;
 };
 
 struct Amplitude {

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "material/anisotropic_elastic.hpp"
 #include "output/dat_headers.hpp"
 #include "output/fortran_format.hpp"
 
@@ -154,14 +155,29 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
   const auto label = [&](int e) { return mesh.elements[static_cast<std::size_t>(e)].id; };
 
   // (i10,1x,i3,1p,n(1x,e13.6))
+  // Tensors (S, E) of an element with an *ORIENTATION print in its frame unless GLOBAL=YES,
+  // each row followed by the orientation's name in 20 columns (ccx).
   auto ip_rows6 = [&](const MatX6& m) {
     need_ip(m.rows());
     for (int e : elems) {
       const Index b = f.ip_offset[static_cast<std::size_t>(e)];
       const Index en = f.ip_offset[static_cast<std::size_t>(e) + 1];
+      const model::Element& el = mesh.elements[static_cast<std::size_t>(e)];
+      const auto& orientation = model_.sections[static_cast<std::size_t>(el.section)].orientation;
+      std::vector<Mat3> frames;
+      if (orientation && !r.global) {
+        MatX3 X(el.nodes.size(), 3);
+        for (std::size_t a = 0; a < el.nodes.size(); ++a) X.row(a) = mesh.coords.row(el.nodes[a]);
+        frames = model::point_frames(*orientation, el.type, X);
+      }
       for (Index p = b; p < en; ++p) {
         out_ << i10(label(e)) << ' ' << i3(p - b + 1);
-        for (int c = 0; c < 6; ++c) out_ << ' ' << fortran_e13_6(m(p, c));
+        const Vec6 row = frames.empty()
+                             ? Vec6(m.row(p).transpose())
+                             : material::stress_to_local(m.row(p).transpose(),
+                                                         frames[static_cast<std::size_t>(p - b)]);
+        for (int c = 0; c < 6; ++c) out_ << ' ' << fortran_e13_6(row(c));
+        if (!frames.empty()) out_ << ' ' << (orientation->name + std::string(20, ' ')).substr(0, 20);
         out_ << '\n';
       }
     }

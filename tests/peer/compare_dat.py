@@ -58,10 +58,13 @@ def parse_blocks(text):
         if not blocks:
             raise ValueError(f"line {number}: data row before any block header: {line!r}")
         fields = line.split()
-        local = fields[-1] == "L"  # ccx's mark of a vector in a *TRANSFORM node's local system
-        if local:
-            fields.pop()
         header = blocks[-1][0]
+        # ccx marks a vector in a *TRANSFORM node's local system with L, and a tensor in an
+        # element's *ORIENTATION frame with the orientation's name after its 6 components; the
+        # mark goes into the row's key, so both files must print the same system.
+        mark = ()
+        if fields[-1] == "L" or ("integ.pnt." in header and len(fields) == 9):
+            mark = (fields.pop(),)
         try:
             if header.startswith("total"):
                 key, values = (), fields
@@ -71,7 +74,7 @@ def parse_blocks(text):
                 key, values = (int(fields[0]),), fields[1:]
         except (ValueError, IndexError):
             raise ValueError(f"line {number}: row without integer key in {header!r}: {line!r}")
-        blocks[-1][1].append((key + (("L",) if local else ()), [_number(v) for v in values]))
+        blocks[-1][1].append((key + mark, [_number(v) for v in values]))
     return blocks
 
 

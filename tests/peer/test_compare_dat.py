@@ -35,6 +35,15 @@ class CompareDat(unittest.TestCase):
         self.assertEqual(worst, float("inf"))
         self.assertTrue(problems)
 
+    def test_orientation_name_is_part_of_the_row_key(self):
+        row = "0.000000E+00  0.000000E+00\n\n total"
+        local = REF.replace(row, "0.000000E+00  0.000000E+00 OR1                 \n\n total")
+        self.assertEqual(parse_blocks(local)[1][1][0][0], (1, 1, "OR1"))
+        self.assertEqual(compare(local, local), (0.0, []))
+        worst, problems = compare(REF, local)  # global where ccx printed the frame's components
+        self.assertEqual(worst, float("inf"))
+        self.assertTrue(problems)
+
     def test_identical_files_have_zero_error(self):
         self.assertEqual(compare(REF, REF), (0.0, []))
 

@@ -50,12 +50,20 @@ class SelectDecks(unittest.TestCase):
     def test_good_deck_qualifies(self):
         self.assertIsNone(exclusion_reason(self.deck(GOOD)))
 
+    def test_orthotropic_elastic_and_orientation_qualify(self):
+        deck = GOOD.replace("*ELASTIC\n", "*ORIENTATION, NAME=OR\n1., 0., 0., 0., 1., 0.\n"
+                            "*ELASTIC, TYPE=ENGINEERING CONSTANTS\n")
+        deck = deck.replace("MATERIAL=M\n", "MATERIAL=M, ORIENTATION=OR\n")
+        self.assertIn("ORIENTATION=OR", deck)
+        self.assertIsNone(exclusion_reason(self.deck(deck)))
+
     def test_each_check_names_its_reason(self):
         cases = {
             ("TYPE=C3D8,", "TYPE=S8,"): "element S8",
             ("*STEP\n", "*STEP\n*FREQUENCY\n"): "keyword *FREQUENCY",
-            ("*ELASTIC\n", "*ELASTIC, TYPE=ORTHO\n"): "*ELASTIC, TYPE=ORTHO",
-            ("MATERIAL=M\n", "MATERIAL=M, ORIENTATION=OR\n"): "*SOLID SECTION, ORIENTATION",
+            ("*ELASTIC\n", "*ELASTIC, TYPE=HYPO\n"): "*ELASTIC, TYPE=HYPO",
+            ("*ELASTIC\n", "*EXPANSION, TYPE=ORTHO\n1e-5, 1e-5, 1e-5\n*ELASTIC\n"):
+                "*EXPANSION, TYPE=ORTHO",
             ("NALL, 1, 3", "NALL, 1, 6"): "*BOUNDARY dof outside 1-3",
             ("1, 3, 1.", "1, 5, 1."): "*CLOAD dof outside 1-3",
             ("EALL, P2, 1.", "EALL, NEWTON"): "*DLOAD NEWTON (not Pn)",
@@ -90,6 +98,17 @@ class SelectDecks(unittest.TestCase):
                 self.assertIn(old, plastic)
                 text = plastic.replace(old, new, 1)
                 self.assertEqual(exclusion_reason(self.deck(text), nlgeom=True), reason)
+
+    def test_nonlinear_set_admits_polynomial_hyperelasticity_without_pressure(self):
+        nl = GOOD.replace("*STEP\n", "*STEP, NLGEOM\n")
+        hyper = nl.replace("*ELASTIC\n210000, 0.3\n", "*HYPERELASTIC, NEO HOOKE\n1.9, 0.026\n")
+        self.assertEqual(exclusion_reason(self.deck(hyper), nlgeom=True),
+                         "*HYPERELASTIC with *DLOAD")
+        unloaded = hyper.replace("*DLOAD\nEALL, P2, 1.\n", "")
+        self.assertIsNone(exclusion_reason(self.deck(unloaded), nlgeom=True))
+        ogden = unloaded.replace("NEO HOOKE", "OGDEN, N=1")
+        self.assertEqual(exclusion_reason(self.deck(ogden), nlgeom=True), "*HYPERELASTIC, OGDEN")
+        self.assertEqual(exclusion_reason(self.deck(unloaded)), "keyword *HYPERELASTIC")
 
     def test_nothing_printed(self):
         text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")

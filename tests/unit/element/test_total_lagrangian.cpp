@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "element/total_lagrangian.hpp"
 #include "element_test_util.hpp"
+#include "material/anisotropic_elastic.hpp"
 
 namespace kontakt::element {
 namespace {
@@ -33,7 +34,7 @@ TEST_P(TotalLagrangian, TangentAtRestIsTheLinearStiffness) {
 }
 
 /// Central-difference tangent and a Taylor test of the forces around u for temperatures dT.
-void check_tangent(ElementType type, const MatX3& x, const LinearElastic& mat, const MatX3& u,
+void check_tangent(ElementType type, const MatX3& x, const ThermoElastic& mat, const MatX3& u,
                    const VecX& dT) {
   auto forces = [&](const MatX3& v) {
     NlgeomResult r;
@@ -56,7 +57,36 @@ TEST_P(TotalLagrangian, TangentWithThermalStrainMatchesCentralDifferences) {
   const MatX3 x = X();
   VecX dT(x.rows());
   for (Index a = 0; a < x.rows(); ++a) dT[a] = 100 + 40 * x(a, 0) - 25 * x(a, 2);
-  check_tangent(type(), x, {1000.0, 0.3, 2e-4}, displacement(), dT);
+  check_tangent(type(), x, LinearElastic{1000.0, 0.3, 2e-4}, displacement(), dT);
+}
+
+TEST_P(TotalLagrangian, TangentOfAnAnisotropicMaterialInAVaryingFrame) {
+  // 21 independent constants (positive definite by the diagonal), in a frame that turns with
+  // the position, as a cylindrical *ORIENTATION does. C3D8R's hourglass control needs E.
+  if (type() == ElementType::C3D8R) GTEST_SKIP() << "refused by the reader";
+  ThermoElastic mat;
+  material::AnisotropicConstants d{};
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = 30.0 * static_cast<Real>(i % 5) - 50;
+  for (std::size_t diagonal : {0u, 2u, 5u, 9u, 14u, 20u}) d[diagonal] = 1500 + 100.0 * diagonal;
+  mat.anisotropic.add(0, d);
+  mat.coords = X();
+  mat.frame = [](const Vec3& x) {
+    return Eigen::AngleAxis<Real>(0.7 * x(0) + 0.3 * x(2), Vec3(1, 2, 3).normalized())
+        .toRotationMatrix();
+  };
+  check_tangent(type(), X(), mat, displacement(), VecX());
+}
+
+TEST_P(TotalLagrangian, TangentOfAHyperelasticMaterial) {
+  if (type() == ElementType::C3D8R) GTEST_SKIP() << "refused by the reader";
+  ThermoElastic mat;
+  material::HyperelasticPolynomial p;
+  p.c[1][0] = 300;
+  p.c[0][1] = 80;
+  p.c[1][1] = 20;
+  p.d = {0.002, 0.01, 0};
+  mat.hyperelastic = p;
+  check_tangent(type(), X(), mat, displacement(), VecX());
 }
 
 TEST_P(TotalLagrangian, FreeThermalExpansionByOnePlusAlphaDTIsStressFree) {

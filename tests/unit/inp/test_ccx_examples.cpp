@@ -55,15 +55,18 @@ bool supported_card(const std::string& keyword, const std::string& card) {
       "BOUNDARY", "STEP", "STATIC", "ENDSTEP", "CLOAD", "DLOAD", "TEMPERATURE", "NODEPRINT",
       "ELPRINT", "NODEFILE", "NODEOUTPUT", "ELFILE", "ELEMENTOUTPUT", "OUTPUT", "FILEFORMAT",
       "PLASTIC", "CONTROLS", "SURFACEINTERACTION", "SURFACEBEHAVIOR", "FRICTION",
-      "CHANGEFRICTION", "CONTACTPAIR", "CONTACTPRINT", "CONTACTFILE", "CONTACTOUTPUT", "TIE"};
+      "CHANGEFRICTION", "CONTACTPAIR", "CONTACTPRINT", "CONTACTFILE", "CONTACTOUTPUT", "TIE",
+      "ORIENTATION"};
   static const std::set<std::string> types = {"C3D4",  "C3D6",  "C3D8",  "C3D8R", "C3D8I",
                                               "C3D10", "C3D15", "C3D20", "C3D20R"};
   if (!keywords.contains(keyword)) return false;
-  for (const char* option : {",USER", ",TIMEDELAY", ",FIXED", ",ORIENTATION", ",SUBMODEL"}) {
+  for (const char* option : {",USER", ",TIMEDELAY", ",FIXED", ",SUBMODEL"}) {
     if (card.find(option) != std::string::npos) return false;
   }
   if (keyword == "ELASTIC" && card.find("TYPE=") != std::string::npos &&
-      card.find("TYPE=ISO") == std::string::npos) {
+      card.find("TYPE=ISO") == std::string::npos && card.find("TYPE=ORTHO") == std::string::npos &&
+      card.find("TYPE=ENGINEERINGCONSTANTS") == std::string::npos &&
+      card.find("TYPE=ANISO") == std::string::npos) {
     return false;
   }
   if (keyword == "INITIALCONDITIONS" && card.find("TYPE=TEMPERATURE") == std::string::npos) {

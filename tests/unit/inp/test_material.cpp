@@ -57,6 +57,71 @@ std::vector<BadDeck> material_bad_decks() {
        plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3\n*PLASTIC\n1., 0., 20.\n1., 0., 100.\n"
             "2., 0., 100.\n"),
        33, "*PLASTIC", "plastic strains must increase from row to row"},
+      {"elastic unknown type", plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=FOO\n1., .3\n"), 28,
+       "*ELASTIC", "TYPE=FOO: expected ISO, ORTHO, ENGINEERING CONSTANTS or ANISO"},
+      {"orthotropic nine on the first line",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ORTHO\n1, 0, 1, 0, 0, 1, 1, 1, 1\n294.\n"), 29,
+       "*ELASTIC", "field(s)"},
+      {"anisotropic not positive definite",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ANISO\n1, 5, 1, 0, 0, 1, 0, 0\n"
+            "0, 1, 0, 0, 0, 0, 1, 0\n0, 0, 0, 0, 1\n"),
+       31, "*ELASTIC", "the elasticity matrix is not positive definite"},
+      {"anisotropic 20 constants",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ANISO\n1, 0, 1, 0, 0, 1, 0, 0\n"
+            "0, 1, 0, 0, 0, 0, 1, 0\n0, 0, 0, 1\n"),
+       31, "*ELASTIC", "expected at least 5 field(s)"},
+      {"engineering constants modulus not positive",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ENGINEERING CONSTANTS\n"
+            "0, 1, 1, .3, .3, .3, 1, 1\n1\n"),
+       30, "*ELASTIC", "must be positive"},
+      {"engineering constants not positive definite",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ENGINEERING CONSTANTS\n"
+            "1, 1, 1, 2, .3, .3, 1, 1\n1\n"),
+       30, "*ELASTIC", "not positive definite"},
+      {"orthotropic temperatures descending",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ORTHO\n1, 0, 1, 0, 0, 1, 1, 1\n1, 100.\n"
+            "1, 0, 1, 0, 0, 1, 1, 1\n1, 20.\n"),
+       32, "*ELASTIC", "temperatures must increase from set to set"},
+      {"plastic with an orthotropic elastic",
+       plus("*MATERIAL, NAME=T\n*ELASTIC, TYPE=ORTHO\n1, 0, 1, 0, 0, 1, 1, 1\n1\n*PLASTIC\n"
+            "1., 0.\n*SOLID SECTION, ELSET=EALL, MATERIAL=T\n"),
+       27, "*MATERIAL", "*PLASTIC needs an isotropic *ELASTIC"},
+      {"C3D8R with an orthotropic material",
+       plus("*ELEMENT, TYPE=C3D8R, ELSET=R\n3, 2, 9, 10, 3, 6, 11, 12, 7\n*MATERIAL, NAME=T\n"
+            "*ELASTIC, TYPE=ORTHO\n1, 0, 1, 0, 0, 1, 1, 1\n1\n*SOLID SECTION, ELSET=R, "
+            "MATERIAL=T\n"),
+       33, "*SOLID SECTION", "hourglass control needs an isotropic *ELASTIC"},
+      {"orientation unknown system", plus("*ORIENTATION, NAME=O, SYSTEM=SPHERICAL\n0,0,0,1,0,0\n"),
+       27, "*ORIENTATION", "SYSTEM=SPHERICAL: expected RECTANGULAR or CYLINDRICAL"},
+      {"orientation a at the origin", plus("*ORIENTATION, NAME=O\n0,0,0,1,0,0\n"), 28,
+       "*ORIENTATION", "point a (on the local x' axis) is the origin"},
+      {"orientation cylinder axis degenerate",
+       plus("*ORIENTATION, NAME=O, SYSTEM=CYLINDRICAL\n1,2,3,1,2,3\n"), 28, "*ORIENTATION",
+       "points a and b of the axis coincide"},
+      {"orientation twice",
+       plus("*ORIENTATION, NAME=O\n1,0,0,0,1,0\n*ORIENTATION, NAME=O\n1,0,0,0,1,0\n"), 29,
+       "*ORIENTATION", "orientation O defined twice"},
+      {"hyperelastic unknown model", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, ARRUDA-BOYCE\n1, 1, 1\n"),
+       28, "*HYPERELASTIC", "ARRUDA-BOYCE"},
+      {"hyperelastic D1 zero", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, NEO HOOKE\n1., 0.\n"), 29,
+       "*HYPERELASTIC", "D1 must be positive"},
+      {"hyperelastic constants missing",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, MOONEY-RIVLIN\n1., .03\n"), 29, "*HYPERELASTIC",
+       "3 constants expected"},
+      {"hyperelastic order 4", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, POLYNOMIAL, N=4\n1, 1\n"),
+       28, "*HYPERELASTIC", "N=4: expected 1, 2 or 3"},
+      {"hyperelastic unstable", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, MOONEY-RIVLIN\n1., -2., .1\n"),
+       29, "*HYPERELASTIC", "C10 + C01"},
+      {"hyperelastic without NLGEOM",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC\n1., 0., .1\n*SOLID SECTION, ELSET=EALL, "
+            "MATERIAL=T\n*STEP\n*STATIC\n*END STEP\n"),
+       31, "*STEP", "every step needs NLGEOM"},
+      {"hyperelastic with elastic",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3\n*HYPERELASTIC, NEO HOOKE\n1., .1\n"
+            "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n"),
+       27, "*MATERIAL", "*HYPERELASTIC stands alone"},
+      {"orientation second line", plus("*ORIENTATION, NAME=O\n1,0,0,0,1,0\n3, 10.\n"), 29,
+       "*ORIENTATION", "data line"},
   };
 }
 
@@ -94,6 +159,59 @@ TEST(inpMaterial, TemperatureTablesAreStoredRowByRow) {
   // The fixture's constant material: one row.
   EXPECT_EQ(material(m, "STEEL").elastic.rows.size(), 1u);
   EXPECT_EQ(material(m, "STEEL").elastic.rows[0][0], 210000.);
+}
+
+TEST(inpMaterial, OrthotropicAndAnisotropicConstantsAreStoredInAnisoOrder) {
+  const model::Model m = read_deck_text(test::two_cubes_model() +
+                                        "*MATERIAL, NAME=ORTHO\n"
+                                        "*ELASTIC, TYPE=ORTHOTROPIC\n"
+                                        "500000.,157200.,400000.,157200.,157200.,300000.,"
+                                        "126200.,126200.,\n"
+                                        "126200.,294.\n"
+                                        "*MATERIAL, NAME=ENG\n"
+                                        "*ELASTIC, TYPE=ENGINEERING CONSTANTS\n"
+                                        "100., 100., 100., 0., 0., 0., 20., 30.\n"
+                                        "40.\n"
+                                        "*MATERIAL, NAME=ANISO\n"
+                                        "*ELASTIC, TYPE=ANISO\n"
+                                        "9, 1, 9, 1, 1, 9, .1, .2\n"
+                                        ".3, 4, .4, .5, .6, .7, 4, .8\n"
+                                        ".9, 1.1, 1.2, 1.3, 4, 50.\n");
+  const model::Material& ortho = material(m, "ORTHO");
+  EXPECT_TRUE(ortho.elastic.empty());
+  ASSERT_EQ(ortho.anisotropic.rows.size(), 1u);
+  EXPECT_EQ(ortho.anisotropic.temperatures.front(), 294.);
+  const auto& o = ortho.anisotropic.rows.front();
+  EXPECT_EQ(o[0], 500000.);   // D1111
+  EXPECT_EQ(o[2], 400000.);   // D2222
+  EXPECT_EQ(o[5], 300000.);   // D3333
+  EXPECT_EQ(o[9], 126200.);   // D1212
+  EXPECT_EQ(o[6], 0.);        // D1112
+  // Zero Poisson's ratios: the moduli themselves on the diagonal.
+  const auto& e = material(m, "ENG").anisotropic.rows.front();
+  EXPECT_DOUBLE_EQ(e[0], 100.);
+  EXPECT_DOUBLE_EQ(e[1], 0.);
+  EXPECT_EQ(e[9], 20.);
+  EXPECT_EQ(e[14], 30.);
+  EXPECT_EQ(e[20], 40.);
+  const auto& a = material(m, "ANISO").anisotropic.rows.front();
+  EXPECT_EQ(a[6], .1);
+  EXPECT_EQ(a[20], 4.);
+  EXPECT_EQ(material(m, "ANISO").anisotropic.temperatures.front(), 50.);
+}
+
+TEST(inpMaterial, OrientationReachesTheSection) {
+  const model::Model m = read_deck_text(test::two_cubes_model() +
+                                        "*ORIENTATION, NAME=Cyl, SYSTEM=CYLINDRICAL\n"
+                                        "0., 0., 0., 0., 0., 1.\n"
+                                        "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL, "
+                                        "ORIENTATION=CYL\n");
+  ASSERT_EQ(m.sections.size(), 2u);
+  EXPECT_FALSE(m.sections.front().orientation);
+  ASSERT_TRUE(m.sections.back().orientation);
+  EXPECT_EQ(m.sections.back().orientation->name, "CYL");
+  EXPECT_EQ(m.sections.back().orientation->frame.kind, model::Transform::Kind::Cylindrical);
+  EXPECT_EQ(m.sections.back().orientation->frame.b, Vec3(0, 0, 1));
 }
 
 TEST(inpMaterial, PlasticCurvesByTemperature) {

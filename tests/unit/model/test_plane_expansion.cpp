@@ -34,7 +34,7 @@ model::Model square(ElementType type, Planar planar, bool quadratic, Real x0 = 0
   m.mesh.elements.push_back(el);
   m.mesh.element_index.emplace(1, 0);
   m.materials.emplace_back();
-  m.sections.push_back(model::SolidSection{"E", 0, kWhere, thickness, offset});
+  m.sections.push_back(model::SolidSection{"E", 0, kWhere, thickness, offset, std::nullopt});
   m.steps.emplace_back();
   return m;
 }
