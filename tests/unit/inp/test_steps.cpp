@@ -300,6 +300,21 @@ TEST(inpSteps, PrintRequestsCarryOverUntilReplaced) {
   EXPECT_EQ(m.steps[2].prints[1].set, "FIX");
 }
 
+TEST(inpSteps, FileCardWithoutVariablesWipesTheSelection) {
+  // ccx 2.20 (measured): an empty *NODE FILE / *EL FILE writes nothing of its kind from that
+  // step on; a later step without the card keeps the empty selection.
+  std::string deck = test::two_cubes_model();
+  deck += "*STEP\n*STATIC\n*NODE FILE\nU\n*EL FILE\nS\n*END STEP\n"
+          "*STEP\n*STATIC\n*NODE FILE\n*END STEP\n"
+          "*STEP\n*STATIC\n*EL FILE\n*END STEP\n";
+  const Model m = read_deck_text(deck);
+  EXPECT_EQ(m.steps[0].node_files.size(), 1u);
+  EXPECT_EQ(m.steps[1].node_files.size(), 0u);
+  EXPECT_EQ(m.steps[1].element_files.size(), 1u);
+  EXPECT_EQ(m.steps[2].node_files.size(), 0u);
+  EXPECT_EQ(m.steps[2].element_files.size(), 0u);
+}
+
 TEST(inpSteps, OutputOnlyKeywordsWarn) {
   std::string deck = test::two_cubes_model();
   deck += "*STEP\n*STATIC\n*NODE FILE, OUTPUT=2D\nU\n*NODE OUTPUT\nRF\n*ELEMENT OUTPUT\nS\n"
