@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "element/initial_stress.hpp"
 #include "element/solid_linear.hpp"
 #include "model/model.hpp"
 
@@ -54,6 +55,26 @@ inline element::ThermoElastic element_material(const model::Model& model,
     m.initial_temperature = element_values(el, model.initial_temperatures);
   }
   return m;
+}
+
+/// An element's initial stress (*INITIAL CONDITIONS, TYPE=STRESS; n_ip x 6), null when it has
+/// none. `el` must be an element of model.mesh.elements (its index there selects the stress).
+inline const MatX* element_initial_stress(const model::Model& model, const model::Element& el) {
+  const auto e = static_cast<std::size_t>(&el - model.mesh.elements.data());
+  if (e >= model.initial_stresses.size() || model.initial_stresses[e].size() == 0) return nullptr;
+  return &model.initial_stresses[e];
+}
+
+/// Adds an element's initial stress, if any, to its point stresses (n_ip x 6) and internal
+/// force (3n) from the small-strain elastic kernel.
+inline void add_initial_stress(const model::Model& model, const model::Element& el,
+                               const MatX3& X, MatX6& stress, VecX& internal_force) {
+  const MatX* sigma0 = element_initial_stress(model, el);
+  if (!sigma0) return;
+  VecX f0;
+  element::initial_stress_force(el.type, X, *sigma0, f0);
+  stress += *sigma0;
+  internal_force += f0;
 }
 
 /// Displacements of one element's nodes (n x 3) from the full dof vector.

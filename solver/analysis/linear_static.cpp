@@ -93,6 +93,12 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
               element::thermal_load(el.type, X, mat, dTe, f);
             else
               f = VecX::Zero(K.rows());
+            // An initial stress is a load of -integral(B^T sigma0): u balances what it leaves.
+            if (const MatX* sigma0 = element_initial_stress(model, el)) {
+              VecX f0;
+              element::initial_stress_force(el.type, X, *sigma0, f0);
+              f -= f0;
+            }
           });
         },
         threads, system);

@@ -47,6 +47,7 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   } else {
     element::IpResults r;
     element::recover(el.type, X, mat, ue, dTe, r);
+    add_initial_stress(model, el, X, r.stress, r.internal_force);
     if (K) element::linear_stiffness(el.type, X, mat, dTe, *K);
     f_int = std::move(r.internal_force);
     trial = committed;

@@ -67,6 +67,7 @@ output::Frame small_strain_frame(const model::Model& model, const VecX& u, const
         element::recover(el.type, X, element_material(model, el), element_displacements(el, u),
                          element_values(el, dT), r);
       });
+      add_initial_stress(model, el, X, r.stress, r.internal_force);
       const Index first = frame.ip_offset[e], count = frame.ip_offset[e + 1] - first;
       frame.S.middleRows(first, count) = r.stress;
       frame.E.middleRows(first, count) = r.strain;

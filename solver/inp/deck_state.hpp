@@ -132,6 +132,8 @@ struct DeckState {
   /// The *SURFACE BEHAVIOR card of each change (interaction index -> card), for messages.
   std::map<int, SourceLoc> behavior_change_where;
   std::map<int, Real> initial_temperatures;  ///< internal node -> value
+  /// The first *INITIAL CONDITIONS, TYPE=STRESS card, for errors found at the end of the deck.
+  std::optional<SourceLoc> initial_stress_where;
   int current_material = -1;                 ///< target of *ELASTIC, *DENSITY, ...
   /// Target of *SURFACE BEHAVIOR and *FRICTION: the open *SURFACE INTERACTION block or, in a
   /// step, the interaction named by *CHANGE FRICTION or *CHANGE SURFACE BEHAVIOR.

@@ -80,8 +80,9 @@ model::FileRequest file_request(const Record& record, DeckState& state) {
   warn_file_layout_params(record, state);
   read_frequency(record, state);
   model::FileRequest request;
+  // No variable line is allowed: as ccx 2.20 does, the card then only wipes the step's
+  // earlier selection of its kind (nothing is written for it from this step on).
   request.variables = output_variables(record);
-  if (request.variables.empty()) fail(record, "no output variables given");
   return request;
 }
 
@@ -194,13 +195,13 @@ void handle_node_file(const Record& record, DeckState& state) {
                  "print local components with *NODE PRINT)");
   // *NODE OUTPUT is ccx's synonym of *NODE FILE: one kind for the wipe rule.
   if (first_in_step(state, "NODEFILE")) state.active.node_files.clear();
-  state.active.node_files.push_back(std::move(request));
+  if (!request.variables.empty()) state.active.node_files.push_back(std::move(request));
 }
 
 void handle_el_file(const Record& record, DeckState& state) {
   auto request = file_request(record, state);
   if (first_in_step(state, "ELFILE")) state.active.element_files.clear();
-  state.active.element_files.push_back(std::move(request));
+  if (!request.variables.empty()) state.active.element_files.push_back(std::move(request));
 }
 
 void handle_output(const Record& record, DeckState& state) {

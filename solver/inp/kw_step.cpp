@@ -1,6 +1,7 @@
 // *STEP, *STATIC, *END STEP, and the model-level *AMPLITUDE, *EQUATION, *INITIAL CONDITIONS.
 #include <algorithm>
 
+#include "element/element_type.hpp"
 #include "inp/keyword_handlers.hpp"
 #include "inp/model_builder.hpp"
 #include "inp/record_access.hpp"
@@ -227,9 +228,42 @@ void handle_equation(const Record& record, DeckState& state) {
   }
 }
 
+namespace {
+
+/// TYPE=STRESS lines: element label, integration point (ccx's order), xx yy zz xy xz yz.
+/// Points not listed keep a zero initial stress.
+void read_initial_stresses(const Record& record, DeckState& state) {
+  model::Model& model = state.model;
+  if (model.initial_stresses.size() < model.mesh.elements.size())
+    model.initial_stresses.resize(model.mesh.elements.size());
+  if (!state.initial_stress_where) state.initial_stress_where = record.where;
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 8, 8);
+    const int label = int_field(record, line, 0);
+    const auto found = model.mesh.element_index.find(label);
+    if (found == model.mesh.element_index.end())
+      fail(record, line, "element " + std::to_string(label) + " is not defined");
+    const int e = found->second;
+    const int n_ip = element::traits(model.mesh.elements[static_cast<std::size_t>(e)].type).n_ip;
+    const int ip = int_field(record, line, 1);
+    if (ip < 1 || ip > n_ip)
+      fail(record, line, "element " + std::to_string(label) + " has integration points 1 to " +
+                             std::to_string(n_ip) + ", not " + std::to_string(ip));
+    MatX& sigma0 = model.initial_stresses[static_cast<std::size_t>(e)];
+    if (sigma0.size() == 0) sigma0 = MatX::Zero(n_ip, 6);
+    for (int c = 0; c < 6; ++c) sigma0(ip - 1, c) = real_field(record, line, 2 + static_cast<std::size_t>(c));
+  }
+}
+
+}  // namespace
+
 void handle_initial_conditions(const Record& record, DeckState& state) {
   check_params(record, {"TYPE"});
   const std::string type = remove_blanks(to_upper(required_value(record, "TYPE")));
+  if (type == "STRESS") {
+    read_initial_stresses(record, state);
+    return;
+  }
   if (type != "TEMPERATURE") fail(record, "TYPE=" + type + " is not supported");
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 2, 2);

@@ -308,6 +308,30 @@ void require_densities(const DeckState& state) {
   }
 }
 
+/// Initial stresses enter the small-strain elastic kernels only: refuse where another kernel
+/// (finite strain, plasticity, incompatible modes, 2D expansion) would have to carry them.
+void require_initial_stress_support(DeckState& state) {
+  model::Model& model = state.model;
+  if (!state.initial_stress_where) return;
+  model.initial_stresses.resize(model.mesh.elements.size());
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(*state.initial_stress_where, "*INITIAL CONDITIONS",
+                     "TYPE=STRESS is supported for small-strain elastic solid elements only: " + why);
+  };
+  for (const model::Step& step : model.steps)
+    if (step.nlgeom) refuse("a step has NLGEOM");
+  for (std::size_t e = 0; e < model.initial_stresses.size(); ++e) {
+    if (model.initial_stresses[e].size() == 0) continue;
+    const model::Element& element = model.mesh.elements[e];
+    const std::string name = "element " + std::to_string(element.id);
+    if (element.planar != model::Planar::None) refuse(name + " is a 2D element");
+    if (element.type == element::ElementType::C3D8I) refuse(name + " is a C3D8I");
+    const model::Material& material =
+        model.materials[static_cast<std::size_t>(model.sections[element.section].material)];
+    if (!material.plastic.empty()) refuse(name + " has a *PLASTIC material");
+  }
+}
+
 }  // namespace
 
 model::Model finish_model(DeckState& state) {
@@ -327,6 +351,7 @@ model::Model finish_model(DeckState& state) {
   assign_sections(state);
   require_sections(state);
   require_densities(state);
+  require_initial_stress_support(state);
   resolve_contact(state);
   resolve_ties(state);
   if (!state.initial_temperatures.empty()) {

@@ -253,6 +253,9 @@ struct Model {
   /// Initial nodal temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE), size n_nodes, or
   /// empty when none were given.
   VecX initial_temperatures;
+  /// Initial stresses (*INITIAL CONDITIONS, TYPE=STRESS) per element: n_ip x 6 (xx yy zz xy xz
+  /// yz, ccx point order), empty for an element without; the vector is empty when none.
+  std::vector<MatX> initial_stresses;
   std::vector<Step> steps;
   /// One entry per deck node of 2D elements (model::expand_planar_elements); empty otherwise.
   std::vector<PlanarFold> planar_folds;

@@ -180,6 +180,35 @@ TEST(inpSteps, TemperaturesAndInitialConditions) {
   EXPECT_EQ(m.steps[2].temperatures.size(), 0);  // reset to the initial field
 }
 
+TEST(inpSteps, InitialStressesPerIntegrationPoint) {
+  std::string deck = test::two_cubes_model();
+  deck += "*INITIAL CONDITIONS, TYPE=STRESS\n2, 3, -100., -50., 0., 1., 2., 3.\n"
+          "*STEP\n*STATIC\n*END STEP\n";
+  const Model m = read_deck_text(deck);
+  ASSERT_EQ(m.initial_stresses.size(), 2u);
+  EXPECT_EQ(m.initial_stresses[0].size(), 0);  // element 1: none
+  ASSERT_EQ(m.initial_stresses[1].rows(), 8);
+  EXPECT_DOUBLE_EQ(m.initial_stresses[1](2, 0), -100.0);
+  EXPECT_DOUBLE_EQ(m.initial_stresses[1](2, 5), 3.0);
+  EXPECT_DOUBLE_EQ(m.initial_stresses[1](0, 0), 0.0);  // points not listed: zero
+  // Bad lines name the card and the line; NLGEOM steps are refused at the card.
+  for (const auto& [bad, why] : std::vector<std::pair<std::string, std::string>>{
+           {"2, 9, 1., 1., 1., 0., 0., 0.\n*STEP\n*STATIC\n*END STEP\n", "points 1 to 8"},
+           {"7, 1, 1., 1., 1., 0., 0., 0.\n*STEP\n*STATIC\n*END STEP\n", "element 7"},
+           {"1, 1, 1., 1., 1.\n*STEP\n*STATIC\n*END STEP\n", "field"},
+           {"1, 1, 1., 1., 1., 0., 0., 0.\n*STEP, NLGEOM\n*STATIC\n*END STEP\n", "NLGEOM"}}) {
+    try {
+      read_deck_text(test::two_cubes_model() + "*INITIAL CONDITIONS, TYPE=STRESS\n" + bad,
+                     "s.inp");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("s.inp:2"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("*INITIAL CONDITIONS"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(inpSteps, AmplitudesAndFreezingAtStepEnd) {
   std::string deck = test::two_cubes_model();
   deck += "*AMPLITUDE, NAME=Ramp2\n0., 0., 1., 2., 2., 2.,\n3., 4.\n"
@@ -269,6 +298,21 @@ TEST(inpSteps, PrintRequestsCarryOverUntilReplaced) {
   EXPECT_EQ(m.steps[1].node_files.size(), 1u);
   EXPECT_EQ(m.steps[2].prints.size(), 2u);
   EXPECT_EQ(m.steps[2].prints[1].set, "FIX");
+}
+
+TEST(inpSteps, FileCardWithoutVariablesWipesTheSelection) {
+  // ccx 2.20 (measured): an empty *NODE FILE / *EL FILE writes nothing of its kind from that
+  // step on; a later step without the card keeps the empty selection.
+  std::string deck = test::two_cubes_model();
+  deck += "*STEP\n*STATIC\n*NODE FILE\nU\n*EL FILE\nS\n*END STEP\n"
+          "*STEP\n*STATIC\n*NODE FILE\n*END STEP\n"
+          "*STEP\n*STATIC\n*EL FILE\n*END STEP\n";
+  const Model m = read_deck_text(deck);
+  EXPECT_EQ(m.steps[0].node_files.size(), 1u);
+  EXPECT_EQ(m.steps[1].node_files.size(), 0u);
+  EXPECT_EQ(m.steps[1].element_files.size(), 1u);
+  EXPECT_EQ(m.steps[2].node_files.size(), 0u);
+  EXPECT_EQ(m.steps[2].element_files.size(), 0u);
 }
 
 TEST(inpSteps, OutputOnlyKeywordsWarn) {
