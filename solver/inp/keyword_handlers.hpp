@@ -36,6 +36,8 @@ void handle_tie(const Record&, DeckState&);
 
 // kw_transform.cpp
 void handle_transform(const Record&, DeckState&);
+/// The points a and b of a *TRANSFORM or *ORIENTATION: its one data line of six numbers.
+const DataLine& read_frame_points(const Record&, model::Transform& frame);
 void handle_orientation(const Record&, DeckState&);
 
 // kw_step.cpp

@@ -270,13 +270,7 @@ void handle_orientation(const Record& record, DeckState& state) {
   else if (system != "RECTANGULAR")
     fail(record, "SYSTEM=" + system + ": expected RECTANGULAR or CYLINDRICAL");
   // ccx allows a second line (an extra rotation about a local axis); not supported here.
-  require_line_count(record, 1, 1);
-  const DataLine& line = record.lines.front();
-  require_field_count(record, line, 6, 6);
-  for (int c = 0; c < 3; ++c) {
-    frame.a[c] = real_field(record, line, c);
-    frame.b[c] = real_field(record, line, 3 + c);
-  }
+  const DataLine& line = read_frame_points(record, frame);
   try {  // a degenerate definition is refused here (x is irrelevant to that)
     (void)model::local_frame(frame, frame.a);
   } catch (const std::invalid_argument& e) {

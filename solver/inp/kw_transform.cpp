@@ -10,6 +10,17 @@
 
 namespace kontakt::inp {
 
+const DataLine& read_frame_points(const Record& record, model::Transform& frame) {
+  require_line_count(record, 1, 1);
+  const DataLine& line = record.lines.front();
+  require_field_count(record, line, 6, 6);
+  for (int c = 0; c < 3; ++c) {
+    frame.a[c] = real_field(record, line, c);
+    frame.b[c] = real_field(record, line, 3 + c);
+  }
+  return line;
+}
+
 void handle_transform(const Record& record, DeckState& state) {
   check_params(record, {"NSET", "TYPE"});
   const std::string name = remove_blanks(to_upper(required_value(record, "NSET")));
@@ -19,13 +30,7 @@ void handle_transform(const Record& record, DeckState& state) {
     transform.kind = model::Transform::Kind::Cylindrical;
   else if (type != "R")
     fail(record, "TYPE=" + type + ": expected R (rectangular) or C (cylindrical)");
-  require_line_count(record, 1, 1);
-  const DataLine& line = record.lines.front();
-  require_field_count(record, line, 6, 6);
-  for (int c = 0; c < 3; ++c) {
-    transform.a[c] = real_field(record, line, c);
-    transform.b[c] = real_field(record, line, 3 + c);
-  }
+  const DataLine& line = read_frame_points(record, transform);
   const auto set = state.node_sets.find(name);
   if (set == state.node_sets.end()) fail(record, "node set " + name + " is not defined");
   std::vector<int> on_axis;

@@ -4,32 +4,9 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "material/symmetric_voigt.hpp"
 
 namespace kontakt::material {
-
-namespace {
-
-constexpr int kI[6] = {0, 1, 2, 0, 0, 1};
-constexpr int kJ[6] = {0, 1, 2, 1, 2, 2};
-
-Vec6 voigt(const Mat3& t) {
-  Vec6 v;
-  for (int a = 0; a < 6; ++a) v(a) = t(kI[a], kJ[a]);
-  return v;
-}
-
-/// Components (ij, kl) of d(C^-1)/dC = -(Ci_ik Ci_jl + Ci_il Ci_jk) / 2.
-Mat6 inverse_derivative(const Mat3& Ci) {
-  Mat6 m;
-  for (int a = 0; a < 6; ++a)
-    for (int b = 0; b < 6; ++b) {
-      const int i = kI[a], j = kJ[a], k = kI[b], l = kJ[b];
-      m(a, b) = -0.5 * (Ci(i, k) * Ci(j, l) + Ci(i, l) * Ci(j, k));
-    }
-  return m;
-}
-
-}  // namespace
 
 HyperelasticResponse polynomial_hyperelastic(const HyperelasticPolynomial& p, const Mat3& C) {
   const Real det = C.determinant();

@@ -5,20 +5,11 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "material/symmetric_voigt.hpp"
 
 namespace kontakt::material {
 
 namespace {
-
-// Voigt index pairs, xx yy zz xy xz yz.
-constexpr int kI[6] = {0, 1, 2, 0, 0, 1};
-constexpr int kJ[6] = {0, 1, 2, 1, 2, 2};
-
-Vec6 voigt(const Mat3& t) {
-  Vec6 v;
-  for (int a = 0; a < 6; ++a) v[a] = t(kI[a], kJ[a]);
-  return v;
-}
 
 Mat3 tensor(const Vec6& v) {
   Mat3 t;
@@ -29,21 +20,6 @@ Mat3 tensor(const Vec6& v) {
 /// Gradient of a scalar f with respect to the engineering Green-Lagrange strain, given the
 /// symmetric tensor g with df = g : dC (dC = 2 dE, shear entries counted twice).
 Vec6 strain_gradient(const Mat3& g) { return 2.0 * voigt(g); }
-
-/// d(C^-1)/dE in Voigt form (engineering shear columns): d(C^-1) = -C^-1 dC C^-1.
-Mat6 inverse_derivative(const Mat3& Ci) {
-  Mat6 m;
-  for (int a = 0; a < 6; ++a) {
-    const int i = kI[a], j = kJ[a];
-    for (int b = 0; b < 6; ++b) {
-      const int k = kI[b], l = kJ[b];
-      // Column b: dC = e_k e_l^T + e_l e_k^T for shear (gamma_kl = dC_kl), 2 e_k e_k^T else.
-      m(a, b) = k == l ? -2.0 * Ci(i, k) * Ci(k, j)
-                       : -(Ci(i, k) * Ci(l, j) + Ci(i, l) * Ci(k, j));
-    }
-  }
-  return m;
-}
 
 }  // namespace
 
@@ -74,7 +50,7 @@ J2FiniteResult j2_finite_strain(Real young, Real poisson, const HardeningTable& 
   const Vec6 dJ = J * Ci_v;
   const Vec6 d_j23 = (-2.0 / 3.0) * j23 * Ci_v;
   const Vec6 d_ie = strain_gradient((-ie / 3.0) * Ci + (j23 / 3.0) * P);
-  const Mat6 d_Ci = inverse_derivative(Ci);
+  const Mat6 d_Ci = 2.0 * inverse_derivative(Ci);  // with respect to E (dC = 2 dE)
   const Vec6 dev_pull = j23 * P_v - ie * Ci_v;  // F^-1 (b_e - I_e 1) F^-T
 
   J2FiniteResult out;
