@@ -163,12 +163,16 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
       const Index b = f.ip_offset[static_cast<std::size_t>(e)];
       const Index en = f.ip_offset[static_cast<std::size_t>(e) + 1];
       const model::Element& el = mesh.elements[static_cast<std::size_t>(e)];
-      const auto& orientation = model_.sections[static_cast<std::size_t>(el.section)].orientation;
+      // A model assembled without sections (unit tests, generated models) has no orientation.
+      const std::size_t section = static_cast<std::size_t>(el.section);
+      const auto* orientation = section < model_.sections.size()
+                                    ? &model_.sections[section].orientation
+                                    : nullptr;
       std::vector<Mat3> frames;
-      if (orientation && !r.global) {
+      if (orientation && *orientation && !r.global) {
         MatX3 X(el.nodes.size(), 3);
         for (std::size_t a = 0; a < el.nodes.size(); ++a) X.row(a) = mesh.coords.row(el.nodes[a]);
-        frames = model::point_frames(*orientation, el.type, X);
+        frames = model::point_frames(**orientation, el.type, X);
       }
       for (Index p = b; p < en; ++p) {
         out_ << i10(label(e)) << ' ' << i3(p - b + 1);
@@ -177,7 +181,8 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
                              : material::stress_to_local(m.row(p).transpose(),
                                                          frames[static_cast<std::size_t>(p - b)]);
         for (int c = 0; c < 6; ++c) out_ << ' ' << fortran_e13_6(row(c));
-        if (!frames.empty()) out_ << ' ' << (orientation->name + std::string(20, ' ')).substr(0, 20);
+        if (!frames.empty())
+          out_ << ' ' << ((*orientation)->name + std::string(20, ' ')).substr(0, 20);
         out_ << '\n';
       }
     }
