@@ -59,16 +59,19 @@ HttpResponse list_sweep_jobs(ApiContext& ctx, const std::string& id) {
 }
 
 /// Every unfinished row: queued ones end canceled, running ones are stopped. 202 while some
-/// are canceling, else 200.
+/// are canceling, else 200. Queued rows go first: a running row stopped first frees its
+/// throttle slot, and the scheduler could start the next row before its cancel arrives.
 HttpResponse cancel_sweep(ApiContext& ctx, const std::string& id) {
   const auto sweep = ctx.store.find_sweep(id);
   if (!sweep) return sweep_not_found(id);
   bool stopping = false;
-  for (const JobRecord& job : ctx.store.sweep_jobs(id)) {
-    if (is_terminal(job.status)) continue;
-    const auto now = cancel_one(ctx, job.id);
-    stopping = stopping || (now && !is_terminal(now->status));
-  }
+  const auto jobs = ctx.store.sweep_jobs(id);
+  for (const bool queued : {true, false})
+    for (const JobRecord& job : jobs) {
+      if (is_terminal(job.status) || (job.status == JobStatus::Queued) != queued) continue;
+      const auto now = cancel_one(ctx, job.id);
+      stopping = stopping || (now && !is_terminal(now->status));
+    }
   return json_response(stopping ? 202 : 200, sweep_document_of(ctx, *sweep));
 }
 
