@@ -105,19 +105,10 @@ def main(argv):
     if len(argv) != 2:
         print(__doc__)
         return 1
-    out = argv[1]
-    os.makedirs(os.path.join(out, "nlgeom"), exist_ok=True)
     decks = {"grav_column": grav_column(), "grav_two": grav_two(),
              "centrif_sector": sector(1e6), "centrif_block": centrif_block()}
-    for name, deck in decks.items():
-        with open(os.path.join(out, name + ".inp"), "w") as f:
-            f.write(with_density(deck.text()))
-    text = with_density(sector(2e7).text()).replace("*STEP\n*STATIC\n",
-                                                    "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n")
-    with open(os.path.join(out, "nlgeom", "centrif_nlgeom.inp"), "w") as f:
-        f.write(text)
-    print(f"{len(decks)} decks in {out}, 1 in {os.path.join(out, 'nlgeom')}")
-    return 0
+    return mg.write_decks(argv[1], {name: with_density(d.text()) for name, d in decks.items()},
+                          {"centrif_nlgeom": mg.as_nlgeom(with_density(sector(2e7).text()))})
 
 
 if __name__ == "__main__":

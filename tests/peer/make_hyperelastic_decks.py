@@ -35,19 +35,14 @@ def deck(etype, model, lines):
     d.boundary([("XMIN", 1, 1), ("YMIN", 2, 2), ("ZMIN", 3, 3), ("ZMAX", 3, 3, 0.3),
                 ("XMAX", 1, 1, 0.1)])
     d.raw_step("*NODE PRINT, NSET=ALL", "U, RF", "*EL PRINT, ELSET=EALL", "S, E")
-    return d.text().replace("*STEP\n*STATIC\n", "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n")
+    return mg.as_nlgeom(d.text())
 
 
 def main(argv):
     if len(argv) != 2:
         print(__doc__)
         return 1
-    os.makedirs(argv[1], exist_ok=True)
-    for name, (etype, model, lines) in MATERIALS.items():
-        with open(os.path.join(argv[1], name + ".inp"), "w") as f:
-            f.write(deck(etype, model, lines))
-    print(f"{len(MATERIALS)} decks in {argv[1]}")
-    return 0
+    return mg.write_decks(argv[1], {name: deck(*m) for name, m in MATERIALS.items()})
 
 
 if __name__ == "__main__":

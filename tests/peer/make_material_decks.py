@@ -74,33 +74,26 @@ def main(argv):
     if len(argv) != 2:
         print(__doc__)
         return 1
-    out = argv[1]
-    os.makedirs(os.path.join(out, "nlgeom"), exist_ok=True)
-    count = 0
+    decks = {}
     for etype in TYPES:
         deck = bar(etype)
         heat_and_load(deck)
-        deck.write(os.path.join(out, f"thermo_{etype}.inp"))
-        count += 1
+        decks[f"thermo_{etype}"] = deck.text()
     deck = bar("C3D20R")
     heat_and_load(deck, 0.5, 100.0)
     first = deck.text()
     deck.step = []
     heat_and_load(deck)
-    second = "".join(deck.text().partition("*STEP\n")[1:])
-    with open(os.path.join(out, "thermo_steps.inp"), "w") as f:
-        f.write(first + second)
-    count += 1
+    decks["thermo_steps"] = first + "".join(deck.text().partition("*STEP\n")[1:])
 
+    nlgeom = {}
     deck = bar("C3D20R")
     heat_and_load(deck, 1.0, 20000.0)
-    with open(os.path.join(out, "nlgeom", "thermo_nlgeom_C3D20R.inp"), "w") as f:
-        f.write(deck.text().replace("*STEP\n*STATIC\n", "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n"))
+    nlgeom["thermo_nlgeom_C3D20R"] = mg.as_nlgeom(deck.text())
     deck = bar("C3D8", plastic=True)
     heat_and_load(deck, 1.0, 150.0)
-    with open(os.path.join(out, "nlgeom", "thermo_plastic_C3D8.inp"), "w") as f:
-        f.write(deck.text().replace("*STEP\n*STATIC\n", "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n"))
-    print(f"{count} decks in {out}, 2 in {os.path.join(out, 'nlgeom')}")
+    nlgeom["thermo_plastic_C3D8"] = mg.as_nlgeom(deck.text())
+    return mg.write_decks(argv[1], decks, nlgeom)
     return 0
 
 

@@ -89,18 +89,11 @@ def main(argv):
     if len(argv) != 2:
         print(__doc__)
         return 1
-    out = argv[1]
-    os.makedirs(os.path.join(out, "nlgeom"), exist_ok=True)
     decks = {"ortho_rect": block("C3D8", "ENGINEERING CONSTANTS", ENGINEERING),
              "aniso_rect": block("C3D20", "ANISO", ANISO), "ortho_cyl": sector()}
-    for name, deck in decks.items():
-        deck.write(os.path.join(out, name + ".inp"))
-    text = block("C3D8", "ENGINEERING CONSTANTS", ENGINEERING, scale=50.0).text()
-    text = text.replace("*STEP\n*STATIC\n", "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n")
-    with open(os.path.join(out, "nlgeom", "ortho_rect_nlgeom.inp"), "w") as f:
-        f.write(text)
-    print(f"{len(decks)} decks in {out}, 1 in {os.path.join(out, 'nlgeom')}")
-    return 0
+    pulled = block("C3D8", "ENGINEERING CONSTANTS", ENGINEERING, scale=50.0)
+    return mg.write_decks(argv[1], {name: d.text() for name, d in decks.items()},
+                          {"ortho_rect_nlgeom": mg.as_nlgeom(pulled.text())})
 
 
 if __name__ == "__main__":

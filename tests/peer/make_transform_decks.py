@@ -100,18 +100,10 @@ def main(argv):
     if len(argv) != 2:
         print(__doc__)
         return 1
-    out = argv[1]
-    os.makedirs(out, exist_ok=True)
     decks = {"rect_force": cube("force"), "rect_disp": cube("disp"),
              "cyl_z": sector(False), "cyl_tilted": sector(True)}
-    for name, deck in decks.items():
-        deck.write(os.path.join(out, name + ".inp"))
-    os.makedirs(os.path.join(out, "nlgeom"), exist_ok=True)
-    text = cube("nlgeom").text().replace("*STEP\n*STATIC\n", "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n")
-    with open(os.path.join(out, "nlgeom", "rect_nlgeom.inp"), "w") as f:
-        f.write(text)
-    print(f"{len(decks)} decks in {out}, 1 in {os.path.join(out, 'nlgeom')}")
-    return 0
+    return mg.write_decks(argv[1], {name: d.text() for name, d in decks.items()},
+                          {"rect_nlgeom": mg.as_nlgeom(cube("nlgeom").text())})
 
 
 if __name__ == "__main__":

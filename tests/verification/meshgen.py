@@ -32,6 +32,7 @@ Public API
 from __future__ import annotations
 
 import math
+import os
 import random
 from itertools import permutations
 
@@ -496,6 +497,24 @@ class Deck:
         with open(path, "w") as f:
             f.write(self.text())
         return path
+
+
+def as_nlgeom(text: str, increments: str = "0.25, 1.") -> str:
+    """The deck's *STEP made NLGEOM, with ccx's initial and total time on the *STATIC line."""
+    return text.replace("*STEP\n*STATIC\n", f"*STEP, NLGEOM\n*STATIC\n{increments}\n")
+
+
+def write_decks(out: str, decks: dict, nlgeom: dict | None = None) -> int:
+    """Writes {name: deck text} into out and the NLGEOM ones into out/nlgeom (run_peer.py runs
+    that folder with --nlgeom); says how many; returns main()'s exit code."""
+    folders = [(out, decks)] + ([(os.path.join(out, "nlgeom"), nlgeom)] if nlgeom else [])
+    for folder, texts in folders:
+        os.makedirs(folder, exist_ok=True)
+        for name, text in texts.items():
+            with open(os.path.join(folder, name + ".inp"), "w") as f:
+                f.write(text)
+    print(", ".join(f"{len(texts)} decks in {folder}" for folder, texts in folders))
+    return 0
 
 
 # --------------------------------------------------------------------------
