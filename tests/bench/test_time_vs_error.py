@@ -111,6 +111,20 @@ class Checks(unittest.TestCase):
         self.assertTrue(failures[0].startswith("patch random000 kontakt nts: not converged"))
 
 
+class SphereCases(unittest.TestCase):
+    def test_each_element_type_at_each_ratio(self):
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[4, 6], sphere_elements=["C3D8", "C3D20"],
+                    line_elements=[], penalties=[], increments=[], slides=[])
+        study = time_vs_error.cases(size, seed=1)
+        self.assertEqual([c.setting for c in study],
+                         ["C3D8 a/h 4", "C3D8 a/h 6", "C3D20 a/h 4", "C3D20 a/h 6"])
+        types = [{e.etype for e in [c.model.upper.mesh]} for c in study]
+        self.assertEqual(types, [{"C3D8"}, {"C3D8"}, {"C3D20"}, {"C3D20"}])
+
+    def test_the_full_study_has_both_element_types(self):
+        self.assertEqual(time_vs_error.FULL["sphere_elements"], ["C3D8", "C3D20"])
+
+
 class PenaltyStudy(unittest.TestCase):
     def test_cases_carry_the_penalty_of_their_setting(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[],

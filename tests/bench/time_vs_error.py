@@ -13,7 +13,7 @@ Problems (`setting` is what varies along a problem's axis):
                 both bodies, max |nodal CPRESS - 1| over the nodes in contact (contact_patch's
                 measure).
   hertz_sphere  3D Hertz: a quarter sphere on a block (tests/contact_models/hertz_sphere.py),
-                C3D8, setting = a/h at the contact. At the load the run measured (4 x the
+                C3D8 and C3D20 (--sphere-elements), setting = element and a/h at the contact. At the load the run measured (4 x the
                 quarter's top reaction): error_p0 = peak nodal CPRESS / p0 - 1 (bench_contact's
                 measure), error_p0_fit and error_radius = the fitted p0 and contact radius a of
                 p^2 = p0^2 (1 - r^2 / a^2) over the slave nodes (contact_hertz's fit) against
@@ -100,10 +100,10 @@ HEADLINE = {"patch": ("error_szz", "error_cpress"),
             "sliding_increments": ("error_turned",),
             "hertz_line": ("error_p0", "error_p0_fit", "error_radius")}
 CCX_SCHEME = {"NODE TO SURFACE": "node-to-surface", "SURFACE TO SURFACE": "surface-to-surface"}
-FULL = dict(patch=6, ratios=[4, 6, 8, 12], line_elements=["C3D8", "C3D20"], line_levels=[1, 2, 3],
+FULL = dict(patch=6, ratios=[4, 6, 8, 12], sphere_elements=["C3D8", "C3D20"], line_elements=["C3D8", "C3D20"], line_levels=[1, 2, 3],
             penalties=[1, 10, 100, 1000, 10000], penalty_ratio=6, increments=[1, 2, 3, 6, 12],
             increment_ratio=6, slides=[1, 2, 4, 8, 16], schemes=list(solvers.SCHEMES))
-SMOKE = dict(patch=2, ratios=[4], line_elements=["C3D8"], line_levels=[1], penalties=[10],
+SMOKE = dict(patch=2, ratios=[4], sphere_elements=["C3D8"], line_elements=["C3D8"], line_levels=[1], penalties=[10],
              penalty_ratio=4, increments=[1], increment_ratio=4, slides=[],
              schemes=["nts", "gc7", "lgc7"])
 DRIFT_OFF = ("--drift-check", "off")
@@ -175,10 +175,11 @@ def cases(size, seed):
     out = []
     for name, kwargs in contact_patch.random_variants(size["patch"], seed):
         out.append(Case("patch", name, patch.patch(**kwargs), "patch", patch_errors))
-    for ratio in size["ratios"]:
-        model = hertz_sphere.hertz_sphere(ratio=ratio)
-        out.append(Case("hertz_sphere", f"C3D8 a/h {ratio:g}", model, "sphere",
-                        lambda run, m=model: sphere_errors(m, run)))
+    for element in size["sphere_elements"]:
+        for ratio in size["ratios"]:
+            model = hertz_sphere.hertz_sphere(element, ratio=ratio)
+            out.append(Case("hertz_sphere", f"{element} a/h {ratio:g}", model, "sphere",
+                            lambda run, m=model: sphere_errors(m, run)))
     for r in size["penalties"]:
         model = dataclasses.replace(hertz_sphere.hertz_sphere(ratio=size["penalty_ratio"]),
                                     penalty=r * hertz_sphere.E_STAR / hertz_sphere.TARGET_RADIUS)
@@ -432,6 +433,8 @@ def main():
     p.add_argument("--patch", type=int, help="patch: number of random variants (6)")
     p.add_argument("--seed", type=int, default=DEFAULT_SEED, help="of the patch variants")
     p.add_argument("--ratios", nargs="+", type=float, help="sphere: a/h levels (4 6 8 12)")
+    p.add_argument("--sphere-elements", nargs="+", choices=("C3D8", "C3D20"),
+                   help="sphere: element types (C3D8 C3D20)")
     p.add_argument("--penalties", nargs="+", type=float,
                    help="penalty study: K a / E* values (1 10 100 1000 10000)")
     p.add_argument("--penalty-ratio", type=float, help="penalty study: the sphere's a/h (6)")
@@ -450,7 +453,7 @@ def main():
                    help="solve nothing: checks, plots and verdict of OUT's CSV (same options)")
     args = p.parse_args()
     size = dict(SMOKE if args.smoke else FULL)
-    for key in ("patch", "ratios", "line_elements", "line_levels", "penalties", "penalty_ratio",
+    for key in ("patch", "ratios", "sphere_elements", "line_elements", "line_levels", "penalties", "penalty_ratio",
                 "increments", "increment_ratio", "slides"):
         if getattr(args, key) is not None:
             size[key] = getattr(args, key)
