@@ -4,6 +4,8 @@ Run: /usr/bin/python3 -m unittest test_time_vs_error   (in this folder)"""
 import sys
 import unittest
 
+import numpy as np
+
 sys.dont_write_bytecode = True  # keep the source tree clean
 
 import pareto  # noqa: E402
@@ -114,7 +116,7 @@ class Checks(unittest.TestCase):
 class SphereCases(unittest.TestCase):
     def test_each_element_type_at_each_ratio(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[4, 6], sphere_elements=["C3D8", "C3D20"],
-                    line_elements=[], penalties=[], increments=[], slides=[])
+                    line_elements=[], penalties=[], increments=[], slides=[], blocks=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([c.setting for c in study],
                          ["C3D8 a/h 4", "C3D8 a/h 6", "C3D20 a/h 4", "C3D20 a/h 6"])
@@ -125,9 +127,52 @@ class SphereCases(unittest.TestCase):
         self.assertEqual(time_vs_error.FULL["sphere_elements"], ["C3D8", "C3D20"])
 
 
+class BlockProblems(unittest.TestCase):
+    def test_fixed_points_lie_inside_one_element_of_every_mesh(self):
+        for n in (4, 8, 16):
+            for x, y, z in time_vs_error.block_measure.fixed_points(time_vs_error.BLOCK_CENTRE):
+                for c in (x, y, z):
+                    self.assertGreater(abs(c * n - round(c * n)), 1e-6, (n, c))
+
+    def test_element_at_finds_the_element_holding_the_point(self):
+        mesh = time_vs_error.block_model("cube", 4).lower.mesh
+        eid = time_vs_error.block_measure.element_at(mesh, np.array([0.6, 0.1, 0.9]))
+        xyz = np.array([mesh.nodes[n] for n in mesh.elements[eid]])
+        np.testing.assert_allclose(xyz.min(axis=0), [0.5, 0.0, 0.75])
+        with self.assertRaises(ValueError):
+            time_vs_error.block_measure.element_at(mesh, np.array([0.5, 0.5, 1.5]))
+
+    def test_von_mises(self):
+        vm = time_vs_error.block_measure.von_mises
+        self.assertAlmostEqual(vm((0, 0, -7, 0, 0, 0)), 7)
+        self.assertAlmostEqual(vm((0, 0, 0, 0, 2, 0)), 2 * 3 ** 0.5)
+        self.assertAlmostEqual(vm((5, 5, 5, 0, 0, 0)), 0)
+
+    def test_errors_against_the_reference(self):
+        ref = {"settlement": -2.0, "von_mises": [10.0, 20.0, 40.0]}
+        run = {"settlement": -2.5, "von_mises": [12.0, 20.0, 34.0]}
+        e = time_vs_error.block_measure.errors(run, ref)
+        self.assertAlmostEqual(e["error_u"], 0.25)
+        self.assertAlmostEqual(e["error_vm"], 6.0 / 40.0)
+
+    def test_cases_per_level_and_a_failed_reference_is_no_error(self):
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
+                    increments=[], slides=[], blocks=["punch", "cube"], block_levels=[4, 8])
+
+        def failed(problem):
+            raise ValueError(f"the reference run of the {problem} did not converge")
+        study = time_vs_error.cases(size, seed=1, reference=failed)
+        self.assertEqual([(c.problem, c.setting) for c in study],
+                         [("punch", "C3D8 4^3"), ("punch", "C3D8 8^3"),
+                          ("cube", "C3D8 4^3"), ("cube", "C3D8 8^3")])
+        self.assertEqual(len(study[1].model.lower.mesh.elements), 8 ** 3)
+        with self.assertRaises(ValueError):
+            study[0].measure(None)
+
+
 class PenaltyStudy(unittest.TestCase):
     def test_cases_carry_the_penalty_of_their_setting(self):
-        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[],
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], blocks=[],
                     penalties=[1, 1e4], penalty_ratio=4, increments=[], slides=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([c.setting for c in study], ["K a/E* 1", "K a/E* 10000"])
@@ -143,7 +188,7 @@ class PenaltyStudy(unittest.TestCase):
 
 class IncrementStudy(unittest.TestCase):
     def setUp(self):
-        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[], blocks=[],
                     increments=[1, 3], increment_ratio=4, slides=[])
         self.study = time_vs_error.cases(size, seed=1)
 
@@ -171,7 +216,7 @@ class IncrementStudy(unittest.TestCase):
 class DriftStudy(unittest.TestCase):
     def test_each_slide_count_with_and_without_the_drift_check(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
-                    increments=[], slides=[1, 4])
+                    blocks=[], increments=[], slides=[1, 4])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([(c.problem, c.setting) for c in study],
                          [("sliding_increments", "1 increments"),

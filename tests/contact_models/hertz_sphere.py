@@ -38,9 +38,10 @@ CAP_WIDTH, CAP_HEIGHT, BLOCK_WIDTH, BLOCK_DEPTH = 0.4, 0.45, 0.6, 0.6
 IN_PLANE, THROUGH = (1.2, 1.15), (0.3, 1.3)  # (uniform length / a, growth per element)
 
 
-def closed_form(load):
-    """(a, p0) of Hertz point contact for the load P on the whole sphere."""
-    a = (3 * load * RADIUS / (4 * E_STAR)) ** (1 / 3)
+def closed_form(load, radius=RADIUS, e_star=E_STAR):
+    """(a, p0) of Hertz point contact for the load P on the whole sphere (this model's radius
+    and E* unless given)."""
+    a = (3 * load * radius / (4 * e_star)) ** (1 / 3)
     return a, 3 * load / (2 * math.pi * a * a)
 
 
