@@ -71,6 +71,8 @@ class StabilisationSchedule {
   /// the measure of how far the path went from an unstabilised one (Abaqus reports the like
   /// as ALLSD). Earlier levels hand their solutions on through the continuation.
   Real absorbed_energy() const { return released_energy_; }
+  /// The spring factor of the last converged level (0: none converged in this attempt).
+  Real held_factor() const { return held_factor_; }
 
  private:
   Real factor_ = 0;              ///< 0: not engaged

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "analysis/constraint_layout.hpp"
 #include "analysis/element_access.hpp"
@@ -231,6 +232,7 @@ class NonlinearStatic {
     Attempt a = begin_attempt(sc);
     const VecX x_start = a.x, u_start = a.u;
     VecX x_saved, u_saved;  // the last converged stabilised level
+    Real saved_share = 0;   // ... and the share of the normal force its springs carried
     std::string engaged_because, release_failure;
     const auto mode = options_.contact_stabilisation;
     if (!contact_.empty() && (mode == ContactStabilisation::Always ||
@@ -298,6 +300,7 @@ class NonlinearStatic {
               "): it has no equilibrium");
         x_saved = a.x;
         u_saved = a.u;
+        saved_share = contact_.stabilisation_share();
         const Next next = stabilisation_.converged(contact_.stabilisation_energy(),
                                                    contact_.stabilisation_share(),
                                                    contact_.approach_ratio());
@@ -306,21 +309,18 @@ class NonlinearStatic {
           level_it = 0;
           continue;
         }
-        if (next == Next::GiveUp)
-          verdict = failure(sc, "contact stabilisation: the springs still carry " +
-                                    std::to_string(contact_.stabilisation_share()) +
-                                    " of the normal force at their last level" +
-                                    (release_failure.empty()
-                                         ? std::string()
-                                         : " (releasing them failed: " + release_failure +
-                                               "; a contact on too few points can leave the "
-                                               "bodies free to rock: refine the contact "
-                                               "surfaces or use a Gauss-Cut scheme)"));
+        if (next == Next::GiveUp) {
+          stabilisation_diagnosis_ = no_release(stabilisation_.factor(), saved_share);
+          verdict = failure(sc, release_failure.empty()
+                                    ? stabilisation_diagnosis_
+                                    : "releasing the springs failed: " + release_failure);
+        }
       }
       if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
         verdict = judged_by_contact(sc, a, refreezes);
         if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
           retry_stabilised_ = false;
+          stabilisation_diagnosis_.clear();
           return commit_increment(sc, a, it);
         }
         if (verdict.kind == nonlinear::Verdict::Kind::Iterate) {  // a new Newton solve from here
@@ -333,7 +333,11 @@ class NonlinearStatic {
       if (stabilisation_.engaged()) {
         const bool release = stabilisation_.releasing();
         if (release) release_failure = verdict.reason;
-        if (stabilisation_.failed() == Next::RestoreAndContinue) {
+        const Real held = stabilisation_.held_factor();
+        const Next next = stabilisation_.failed();
+        if (next == Next::GiveUp && held > 0)
+          stabilisation_diagnosis_ = no_release(held, saved_share);
+        if (next == Next::RestoreAndContinue) {
           warn(sc.number, "increment " + std::to_string(increments_->increment_number()) +
                               (release ? ": releasing the contact stabilisation failed ("
                                        : ": a contact stabilisation level failed (") +
@@ -349,8 +353,22 @@ class NonlinearStatic {
       // The retry of a failed attempt with contact starts stabilised: a contact set that
       // chatters (point contact, coarse meshes) settles while the springs hold the bodies.
       retry_stabilised_ = !contact_.empty();
+      // What an attempt of this increment found out about the stabilisation stays in the
+      // reasons of the later ones: the last is what the step's failure reports.
+      if (!stabilisation_diagnosis_.empty()) verdict.reason += "; " + stabilisation_diagnosis_;
       return cut_back(sc, a, it, verdict);
     }
+  }
+
+  /// Why an attempt ended on stabilisation springs it could not release.
+  static std::string no_release(Real factor, Real share) {
+    std::ostringstream why;
+    why << "the contact stabilisation found no way off its springs (the weakest level that "
+           "converged, "
+        << factor << " times the penalty, left them " << share
+        << " of the normal force): contact on too few points can leave a body free to rock; "
+           "refine the contact surfaces or use a surface-to-surface scheme";
+    return why.str();
   }
 
   /// The verdict for an iteration that could not be completed.
@@ -557,6 +575,9 @@ class NonlinearStatic {
   contact::StabilisationSchedule stabilisation_;
   bool retry_stabilised_ = false;  ///< the increment's last attempt failed (with contact)
   bool warned_zero_energy_mode_ = false;
+  /// Why the contact stabilisation could not be released in an attempt of the increment being
+  /// tried (empty: it could, or it was not needed).
+  std::string stabilisation_diagnosis_;
 
   // Figures for the done event
   PhaseTimes times_;
