@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "contact/cyclic_symmetry.hpp"
 #include "contact/master_search.hpp"
 
 namespace kontakt::contact {
@@ -86,26 +87,16 @@ std::vector<std::string> node_labels(const model::Model& model, const std::vecto
 
 const char* direction(int dof) { return dof == 0 ? "x" : dof == 1 ? "y" : "z"; }
 
-/// Global dofs (3 node + component) that a tie may not make dependent: prescribed in the first
-/// step (ccx generates the ties with the first step's constraints) or already the dependent
-/// dof of an equation.
-std::vector<char> constrained_dofs(const model::Model& model) {
-  std::vector<char> taken(3 * static_cast<std::size_t>(model.n_nodes()), 0);
-  if (!model.steps.empty())
-    for (const auto& bc : model.steps.front().boundaries) taken[3 * bc.node + bc.dof] = 1;
-  for (const auto& eq : model.equations)
-    taken[3 * eq.terms.front().node + eq.terms.front().dof] = 1;
-  return taken;
-}
-
 /// ccx's default tolerance: one value from the master faces of every tie, also those with a
 /// tolerance of their own (0 when no tie needs it).
 Real default_tolerance(const model::Model& model) {
-  if (std::all_of(model.ties.begin(), model.ties.end(),
-                  [](const model::Tie& tie) { return tie.position_tolerance.has_value(); }))
+  if (std::all_of(model.ties.begin(), model.ties.end(), [](const model::Tie& tie) {
+        return tie.position_tolerance.has_value() || tie.cyclic;
+      }))
     return 0;
   std::vector<SurfaceFace> faces;
   for (const model::Tie& tie : model.ties) {
+    if (tie.cyclic) continue;
     const ContactSurface master = make_contact_surface(model, model.surfaces.at(tie.master));
     faces.insert(faces.end(), master.faces.begin(), master.faces.end());
   }
@@ -191,6 +182,15 @@ void add_tied_contact(model::Model& model, const model::Tie& tie) {
 
 }  // namespace
 
+std::vector<char> constrained_dofs(const model::Model& model) {
+  std::vector<char> taken(3 * static_cast<std::size_t>(model.n_nodes()), 0);
+  if (!model.steps.empty())
+    for (const auto& bc : model.steps.front().boundaries) taken[3 * bc.node + bc.dof] = 1;
+  for (const auto& eq : model.equations)
+    taken[3 * eq.terms.front().node + eq.terms.front().dof] = 1;
+  return taken;
+}
+
 Real typical_master_size(std::span<const SurfaceFace> faces, const MatX3& coords) {
   Real sum = 0;
   int count = 0;
@@ -260,6 +260,13 @@ int apply_ties(model::Model& model) {
   std::vector<char> constrained = constrained_dofs(model);
   int n_tied = 0;
   for (const model::Tie& tie : model.ties) {
+    if (tie.cyclic) {
+      const auto cyclic = std::find_if(
+          model.cyclic_symmetry.begin(), model.cyclic_symmetry.end(),
+          [&](const model::CyclicSymmetry& c) { return c.tie == tie.name; });
+      n_tied += apply_cyclic_symmetry(model, tie, *cyclic, constrained);
+      continue;
+    }
     const TieMaster master = make_tie_master(model, model.surfaces.at(tie.master));
     const Real tolerance = tie.position_tolerance.value_or(default_tol);
     std::vector<int> missed;

@@ -56,9 +56,15 @@ std::optional<TieFoot> find_tie_foot(const TieMaster& master, const Vec3& p, Rea
 model::Equation tie_equation(int slave, int dof, const SurfaceFace& face, const Vec2& xi,
                              const SourceLoc& where);
 
+/// Global dofs (3 node + component) that a tie may not make dependent: prescribed in the first
+/// step (ccx generates the ties with the first step's constraints) or already the dependent
+/// dof of an equation.
+std::vector<char> constrained_dofs(const model::Model& model);
+
 /// The model-setup step of every *TIE, in deck order (a later tie sees the nodes an earlier
 /// one moved): appends the tie constraints to `model.equations` (a tie with SCHEME=: a
-/// surface-to-surface pair with a TIED law, K = lambda = 50 E), moves the tied slave nodes
+/// surface-to-surface pair with a TIED law, K = lambda = 50 E; a CYCLIC SYMMETRY tie: the
+/// equations of its *CYCLIC SYMMETRY MODEL, cyclic_symmetry.hpp), moves the tied slave nodes
 /// onto their feet unless ADJUST=NO, and reports free nodes, skipped dofs and moves in
 /// `model.warnings`. Returns the number of slave nodes tied in at least one direction. Run
 /// once, after reading, before any analysis.

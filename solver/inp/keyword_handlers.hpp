@@ -33,6 +33,7 @@ void handle_contact_pair(const Record&, DeckState&);
 
 // kw_tie.cpp
 void handle_tie(const Record&, DeckState&);
+void handle_cyclic_symmetry_model(const Record&, DeckState&);
 
 // kw_transform.cpp
 void handle_transform(const Record&, DeckState&);

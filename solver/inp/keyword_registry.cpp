@@ -35,6 +35,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"FRICTION", A, Inter, handle_friction},  // in a step: after *CHANGE FRICTION
     {"CONTACTPAIR", M, None, handle_contact_pair},
     {"TIE", M, None, handle_tie},
+    {"CYCLICSYMMETRYMODEL", M, None, handle_cyclic_symmetry_model},
     {"TRANSFORM", M, None, handle_transform},
     {"ORIENTATION", M, None, handle_orientation},
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},

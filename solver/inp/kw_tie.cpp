@@ -1,7 +1,9 @@
 // *TIE (ccx 2.20, ties.f): NAME= (required), POSITION TOLERANCE=, ADJUST=NO, our SCHEME= (tie
-// through TIED contact), and one "slave, master" data line. Ties for cyclic symmetry and multistage periodicity are another
-// analysis and are refused. The surface names are resolved at the end of the deck
-// (tie_builder.cpp): ccx allows the surfaces after the *TIE.
+// through TIED contact), CYCLIC SYMMETRY (with its *CYCLIC SYMMETRY MODEL), and one "slave,
+// master" data line. Multistage ties are another analysis and are refused. The surface names
+// are resolved at the end of the deck (tie_builder.cpp): ccx allows the surfaces after the
+// *TIE.
+#include <algorithm>
 #include <string_view>
 #include <utility>
 
@@ -56,14 +58,10 @@ std::optional<model::ContactScheme> scheme(const Record& record) {
 }  // namespace
 
 void handle_tie(const Record& record, DeckState& state) {
-  using Spelling = std::pair<std::string_view, std::string_view>;  // lookup, display
-  for (const auto& [key, shown] : {Spelling{"CYCLICSYMMETRY", "CYCLIC SYMMETRY"},
-                                   Spelling{"MULTISTAGE", "MULTISTAGE"}})
-    if (has_param(record, key))
-      fail(record, std::string(shown) +
-                       " ties are not supported (Kontakt ties surfaces for tied contact only; "
-                       "cyclic symmetry and multistage analyses are out of its scope)");
-  check_params(record, {"NAME", "POSITIONTOLERANCE", "ADJUST", "SCHEME"});
+  if (has_param(record, "MULTISTAGE"))
+    fail(record, "MULTISTAGE ties are not supported (multistage analyses are out of Kontakt's "
+                 "scope)");
+  check_params(record, {"NAME", "POSITIONTOLERANCE", "ADJUST", "SCHEME", "CYCLICSYMMETRY"});
   const std::optional<std::string> name = name_value(record, "NAME");
   if (!name) fail(record, "NAME= is required (the tie name is lacking)");
   for (const model::Tie& other : state.model.ties)
@@ -75,6 +73,9 @@ void handle_tie(const Record& record, DeckState& state) {
   tie.position_tolerance = position_tolerance(record, state);
   tie.adjust = adjust(record);
   tie.scheme = scheme(record);
+  tie.cyclic = has_param(record, "CYCLICSYMMETRY");
+  if (tie.cyclic && tie.scheme)
+    fail(record, "SCHEME= ties through contact; a CYCLIC SYMMETRY tie is made of equations");
   require_line_count(record, 1, 1);
   const DataLine& line = record.lines.front();
   require_field_count(record, line, 2, 2);
@@ -84,6 +85,44 @@ void handle_tie(const Record& record, DeckState& state) {
     fail(record, line, "expected slave surface, master surface");
   tie.where = line.where;
   state.model.ties.push_back(std::move(tie));
+}
+
+void handle_cyclic_symmetry_model(const Record& record, DeckState& state) {
+  check_params(record, {"N", "TIE", "ELSET", "NGRAPH", "CHECK"});
+  model::CyclicSymmetry cyclic;
+  const std::optional<int> sectors = int_param(record, "N");
+  if (!sectors || *sectors < 2) fail(record, "N= (the number of sectors, at least 2) is required");
+  cyclic.sectors = *sectors;
+  const std::optional<int> graphs = int_param(record, "NGRAPH");
+  if (graphs && *graphs != 1)
+    fail(record, "NGRAPH=" + std::to_string(*graphs) +
+                     ": results are written for the modelled sector only (NGRAPH=1)");
+  const std::optional<std::string> tie = name_value(record, "TIE");
+  if (!tie) fail(record, "TIE= (the CYCLIC SYMMETRY tie) is required");
+  const auto found = std::find_if(state.model.ties.begin(), state.model.ties.end(),
+                                  [&](const model::Tie& t) { return t.name == *tie; });
+  if (found == state.model.ties.end())
+    fail(record, "TIE=" + *tie + ": no *TIE of that name before this card");
+  if (!found->cyclic) fail(record, "TIE=" + *tie + " is not a CYCLIC SYMMETRY tie");
+  for (const model::CyclicSymmetry& other : state.model.cyclic_symmetry)
+    if (other.tie == *tie)
+      fail(record, "tie " + *tie + " has a *CYCLIC SYMMETRY MODEL already (at " +
+                       other.where.file + ":" + std::to_string(other.where.line) + ")");
+  cyclic.tie = *tie;
+  cyclic.elset = name_value(record, "ELSET").value_or("");
+  if (!cyclic.elset.empty() && !state.element_sets.count(cyclic.elset))
+    fail(record, "ELSET=" + cyclic.elset + " is not defined");
+  require_line_count(record, 1, 1);
+  const DataLine& line = record.lines.front();
+  require_field_count(record, line, 6, 6);
+  for (int k = 0; k < 3; ++k) {
+    cyclic.axis_from[k] = real_field(record, line, static_cast<std::size_t>(k));
+    cyclic.axis_to[k] = real_field(record, line, static_cast<std::size_t>(k) + 3);
+  }
+  if ((cyclic.axis_to - cyclic.axis_from).norm() == 0)
+    fail(record, line, "the two points of the axis coincide");
+  cyclic.where = line.where;
+  state.model.cyclic_symmetry.push_back(std::move(cyclic));
 }
 
 }  // namespace kontakt::inp

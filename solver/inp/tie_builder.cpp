@@ -1,5 +1,7 @@
 #include "inp/tie_builder.hpp"
 
+#include <algorithm>
+
 namespace kontakt::inp {
 
 namespace {
@@ -22,7 +24,13 @@ void resolve_ties(const DeckState& state) {
   for (const model::Tie& tie : state.model.ties) {
     tie_surface(state, tie, tie.slave, "slave");
     const model::Surface& master = tie_surface(state, tie, tie.master, "master");
-    if (master.kind != model::Surface::Kind::ElementFaces)
+    if (tie.cyclic) {  // node to node: either side may be a node surface
+      if (std::none_of(state.model.cyclic_symmetry.begin(), state.model.cyclic_symmetry.end(),
+                       [&](const model::CyclicSymmetry& c) { return c.tie == tie.name; }))
+        throw InputError(tie.where, "*TIE",
+                         "CYCLIC SYMMETRY tie " + tie.name +
+                             " has no *CYCLIC SYMMETRY MODEL (N= sectors and the axis)");
+    } else if (master.kind != model::Surface::Kind::ElementFaces)
       throw InputError(tie.where, "*TIE",
                        "tie " + tie.name + ": master surface " + tie.master +
                            " must be made of element faces (a node surface has no faces to "

@@ -250,6 +250,9 @@ struct Model {
   std::vector<ContactPair> contact_pairs;  ///< all pairs of the deck (model level, as in ccx)
   /// *TIE, deck order; contact::apply_ties turns them into `equations` before the analysis.
   std::vector<Tie> ties;
+  /// *CYCLIC SYMMETRY MODEL, deck order; contact::apply_ties turns each with its tie into
+  /// `equations`.
+  std::vector<CyclicSymmetry> cyclic_symmetry;
   /// Initial nodal temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE), size n_nodes, or
   /// empty when none were given.
   VecX initial_temperatures;

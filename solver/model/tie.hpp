@@ -23,6 +23,21 @@ struct Tie {
   /// SCHEME= (Kontakt's extension): tie through segment-to-segment TIED contact with this
   /// scheme (thesis §5.5, exact on the tied patch test) instead of ccx's MPCs.
   std::optional<ContactScheme> scheme;
+  /// CYCLIC SYMMETRY: the slave (dependent) side is the master (independent) side turned by a
+  /// sector about the axis of its *CYCLIC SYMMETRY MODEL; either may be a node surface.
+  bool cyclic = false;
+  SourceLoc where;                ///< the data line
+};
+
+/// *CYCLIC SYMMETRY MODEL for a static analysis: one of `sectors` equal sectors is modelled,
+/// and each dependent node of the cyclic tie moves as its independent node turned by 2 pi /
+/// sectors about the axis through `axis_from` and `axis_to` (a load that is the same on every
+/// sector: ccx's nodal diameter 0).
+struct CyclicSymmetry {
+  std::string tie;                ///< TIE=, a CYCLIC SYMMETRY tie
+  int sectors = 0;                ///< N=
+  std::string elset;              ///< ELSET=: the sector's elements (ccx: what it expands)
+  Vec3 axis_from = Vec3::Zero(), axis_to = Vec3::Zero();
   SourceLoc where;                ///< the data line
 };
 

@@ -56,7 +56,7 @@ bool supported_card(const std::string& keyword, const std::string& card) {
       "ELPRINT", "NODEFILE", "NODEOUTPUT", "ELFILE", "ELEMENTOUTPUT", "OUTPUT", "FILEFORMAT",
       "PLASTIC", "CONTROLS", "SURFACEINTERACTION", "SURFACEBEHAVIOR", "FRICTION",
       "CHANGEFRICTION", "CONTACTPAIR", "CONTACTPRINT", "CONTACTFILE", "CONTACTOUTPUT", "TIE",
-      "ORIENTATION"};
+      "ORIENTATION", "CYCLICSYMMETRYMODEL"};
   static const std::set<std::string> types = {"C3D4",  "C3D6",  "C3D8",  "C3D8R", "C3D8I",
                                               "C3D10", "C3D15", "C3D20", "C3D20R"};
   if (!keywords.contains(keyword)) return false;
@@ -76,9 +76,12 @@ bool supported_card(const std::string& keyword, const std::string& card) {
       card.find("TYPE=SURFACETOSURFACE") == std::string::npos) {
     return false;  // mortar and massless contact
   }
-  if (keyword == "TIE" && (card.find(",CYCLICSYMMETRY") != std::string::npos ||
-                           card.find(",MULTISTAGE") != std::string::npos)) {
-    return false;  // ties of other analyses
+  if (keyword == "TIE" && card.find(",MULTISTAGE") != std::string::npos) {
+    return false;  // ties of another analysis
+  }
+  if (keyword == "CYCLICSYMMETRYMODEL" && card.find("NGRAPH=") != std::string::npos &&
+      card.find("NGRAPH=1,") == std::string::npos && !card.ends_with("NGRAPH=1")) {
+    return false;  // expanded output
   }
   if (keyword == "PLASTIC" && card.find("HARDENING=") != std::string::npos &&
       card.find("HARDENING=ISOTROPIC") == std::string::npos) {
