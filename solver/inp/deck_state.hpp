@@ -134,6 +134,10 @@ struct DeckState {
   std::map<int, Real> initial_temperatures;  ///< internal node -> value
   /// The first *INITIAL CONDITIONS, TYPE=STRESS card, for errors found at the end of the deck.
   std::optional<SourceLoc> initial_stress_where;
+  /// *INITIAL CONDITIONS, TYPE=PLASTIC STRAIN per element (n_ip x 6, tensor components; empty:
+  /// none), turned into initial stresses once the materials are known; its first card.
+  std::vector<MatX> initial_inelastic_strains;
+  std::optional<SourceLoc> initial_inelastic_strain_where;
   int current_material = -1;                 ///< target of *ELASTIC, *DENSITY, ...
   /// Target of *SURFACE BEHAVIOR and *FRICTION: the open *SURFACE INTERACTION block or, in a
   /// step, the interaction named by *CHANGE FRICTION or *CHANGE SURFACE BEHAVIOR.

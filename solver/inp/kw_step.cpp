@@ -230,13 +230,11 @@ void handle_equation(const Record& record, DeckState& state) {
 
 namespace {
 
-/// TYPE=STRESS lines: element label, integration point (ccx's order), xx yy zz xy xz yz.
-/// Points not listed keep a zero initial stress.
-void read_initial_stresses(const Record& record, DeckState& state) {
+/// TYPE=STRESS and TYPE=PLASTIC STRAIN lines: element label, integration point (ccx's order),
+/// xx yy zz xy xz yz, into `fields` (per element n_ip x 6). Points not listed keep zeros.
+void read_point_tensors(const Record& record, DeckState& state, std::vector<MatX>& fields) {
   model::Model& model = state.model;
-  if (model.initial_stresses.size() < model.mesh.elements.size())
-    model.initial_stresses.resize(model.mesh.elements.size());
-  if (!state.initial_stress_where) state.initial_stress_where = record.where;
+  if (fields.size() < model.mesh.elements.size()) fields.resize(model.mesh.elements.size());
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 8, 8);
     const int label = int_field(record, line, 0);
@@ -249,9 +247,10 @@ void read_initial_stresses(const Record& record, DeckState& state) {
     if (ip < 1 || ip > n_ip)
       fail(record, line, "element " + std::to_string(label) + " has integration points 1 to " +
                              std::to_string(n_ip) + ", not " + std::to_string(ip));
-    MatX& sigma0 = model.initial_stresses[static_cast<std::size_t>(e)];
-    if (sigma0.size() == 0) sigma0 = MatX::Zero(n_ip, 6);
-    for (int c = 0; c < 6; ++c) sigma0(ip - 1, c) = real_field(record, line, 2 + static_cast<std::size_t>(c));
+    MatX& field = fields[static_cast<std::size_t>(e)];
+    if (field.size() == 0) field = MatX::Zero(n_ip, 6);
+    for (int c = 0; c < 6; ++c)
+      field(ip - 1, c) = real_field(record, line, 2 + static_cast<std::size_t>(c));
   }
 }
 
@@ -261,7 +260,13 @@ void handle_initial_conditions(const Record& record, DeckState& state) {
   check_params(record, {"TYPE"});
   const std::string type = remove_blanks(to_upper(required_value(record, "TYPE")));
   if (type == "STRESS") {
-    read_initial_stresses(record, state);
+    if (!state.initial_stress_where) state.initial_stress_where = record.where;
+    read_point_tensors(record, state, state.model.initial_stresses);
+    return;
+  }
+  if (type == "PLASTICSTRAIN") {
+    if (!state.initial_inelastic_strain_where) state.initial_inelastic_strain_where = record.where;
+    read_point_tensors(record, state, state.initial_inelastic_strains);
     return;
   }
   if (type != "TEMPERATURE") fail(record, "TYPE=" + type + " is not supported");

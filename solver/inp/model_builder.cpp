@@ -308,6 +308,44 @@ void require_densities(const DeckState& state) {
   }
 }
 
+/// An initial inelastic strain of an elastic material is the initial stress -C eps_p (ccx's
+/// TYPE=PLASTIC STRAIN, tensor shear components): the stress is then C (eps - eps_p) from the
+/// first increment on. A *PLASTIC material would need the strain in its plastic state, and a
+/// temperature-dependent or anisotropic one the stiffness at each point: both are refused.
+void add_initial_inelastic_strains(DeckState& state) {
+  model::Model& model = state.model;
+  if (!state.initial_inelastic_strain_where) return;
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(*state.initial_inelastic_strain_where, "*INITIAL CONDITIONS",
+                     "TYPE=PLASTIC STRAIN is supported for isotropic elastic materials with "
+                     "constant constants only: " + why);
+  };
+  model.initial_stresses.resize(model.mesh.elements.size());
+  state.initial_inelastic_strains.resize(model.mesh.elements.size());
+  for (std::size_t e = 0; e < model.mesh.elements.size(); ++e) {
+    const MatX& strain = state.initial_inelastic_strains[e];
+    if (strain.size() == 0) continue;
+    const model::Element& element = model.mesh.elements[e];
+    const model::Material& material =
+        model.materials[static_cast<std::size_t>(model.sections[element.section].material)];
+    const std::string name = "element " + std::to_string(element.id) + " (material " +
+                             material.name + ")";
+    if (!material.plastic.empty()) refuse(name + " has *PLASTIC");
+    if (material.elastic.rows.size() != 1) refuse(name + " is not isotropic with one *ELASTIC row");
+    const auto [young, poisson] = material.elastic.rows.front();
+    const Real mu = young / (2 * (1 + poisson));
+    const Real lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
+    MatX& sigma0 = model.initial_stresses[e];
+    if (sigma0.size() == 0) sigma0 = MatX::Zero(strain.rows(), 6);
+    for (Eigen::Index ip = 0; ip < strain.rows(); ++ip) {
+      const Real trace = strain(ip, 0) + strain(ip, 1) + strain(ip, 2);
+      for (int c = 0; c < 6; ++c)
+        sigma0(ip, c) -= 2 * mu * strain(ip, c) + (c < 3 ? lambda * trace : 0);
+    }
+  }
+  if (!state.initial_stress_where) state.initial_stress_where = state.initial_inelastic_strain_where;
+}
+
 /// Initial stresses enter the small-strain elastic kernels only: refuse where another kernel
 /// (finite strain, plasticity, incompatible modes, 2D expansion) would have to carry them.
 void require_initial_stress_support(DeckState& state) {
@@ -351,6 +389,7 @@ model::Model finish_model(DeckState& state) {
   assign_sections(state);
   require_sections(state);
   require_densities(state);
+  add_initial_inelastic_strains(state);
   require_initial_stress_support(state);
   resolve_contact(state);
   resolve_ties(state);

@@ -209,6 +209,44 @@ TEST(inpSteps, InitialStressesPerIntegrationPoint) {
   }
 }
 
+TEST(inpSteps, InitialInelasticStrainsBecomeTheInitialStressOfAnElasticMaterial) {
+  std::string deck = test::two_cubes_model();
+  deck += "*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN\n2, 3, 1e-3, -2e-4, 0., 4e-4, 0., -1e-4\n"
+          "*INITIAL CONDITIONS, TYPE=STRESS\n2, 3, 10., 0., 0., 0., 0., 0.\n"
+          "*STEP\n*STATIC\n*END STEP\n";
+  const Model m = read_deck_text(deck);
+  const auto [young, poisson] = m.materials.front().elastic.rows.front();
+  const Real mu = young / (2 * (1 + poisson));
+  const Real lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
+  ASSERT_EQ(m.initial_stresses[1].rows(), 8);
+  const Real trace = 1e-3 - 2e-4;
+  // sigma0 = -C eps_p (tensor shear components: 2 mu eps_xy), plus the given initial stress
+  EXPECT_NEAR(m.initial_stresses[1](2, 0), 10.0 - (2 * mu * 1e-3 + lambda * trace), 1e-9);
+  EXPECT_NEAR(m.initial_stresses[1](2, 1), -(2 * mu * -2e-4 + lambda * trace), 1e-9);
+  EXPECT_NEAR(m.initial_stresses[1](2, 2), -lambda * trace, 1e-9);
+  EXPECT_NEAR(m.initial_stresses[1](2, 3), -2 * mu * 4e-4, 1e-9);
+  EXPECT_NEAR(m.initial_stresses[1](2, 5), 2 * mu * 1e-4, 1e-9);
+  EXPECT_EQ(m.initial_stresses[1](1, 0), 0.0);
+  // Materials that would need more than C at the start are refused at the card.
+  std::string plastic = test::two_cubes_model();
+  plastic.replace(plastic.find("*SOLID SECTION"), 0, "*PLASTIC\n300., 0.\n");
+  std::string hot = test::two_cubes_model();
+  const auto row = hot.find('\n', hot.find("*ELASTIC\n") + 9);
+  hot.replace(row, 0, ", 20.\n100000., 0.3, 500.");
+  for (const auto& [model, why] : std::vector<std::pair<std::string, std::string>>{
+           {plastic, "has *PLASTIC"}, {hot, "is not isotropic with one *ELASTIC row"}}) {
+    try {
+      read_deck_text(model + "*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN\n"
+                             "1, 1, 1e-3, 0., 0., 0., 0., 0.\n*STEP\n*STATIC\n*END STEP\n",
+                     "p.inp");
+      ADD_FAILURE() << "accepted: " << why;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("*INITIAL CONDITIONS"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(inpSteps, AmplitudesAndFreezingAtStepEnd) {
   std::string deck = test::two_cubes_model();
   deck += "*AMPLITUDE, NAME=Ramp2\n0., 0., 1., 2., 2., 2.,\n3., 4.\n"
