@@ -308,8 +308,12 @@ JobPage JobStore::list_jobs(const JobQuery& query) {
     sql += " AND json_extract(labels, '$.\"' || ? || '\"') = ?";
   for (std::size_t i = 0; i < query.label_keys.size(); ++i)
     sql += " AND EXISTS (SELECT 1 FROM json_each(jobs.labels) WHERE json_each.key = ?)";
-  if (query.after) sql += " AND (created_ms < ? OR (created_ms = ? AND id < ?))";
-  sql += " ORDER BY created_ms DESC, id DESC LIMIT ?";
+  // Newest first; jobs of the same millisecond in reverse insertion order (rowid). A page
+  // resumes after its last job's row (a job deleted since leaves the rest of its millisecond).
+  if (query.after)
+    sql += " AND (created_ms < ? OR (created_ms = ? AND "
+           "rowid < COALESCE((SELECT rowid FROM jobs WHERE id = ?), 0)))";
+  sql += " ORDER BY created_ms DESC, rowid DESC LIMIT ?";
   auto lease = read();
   Statement st(lease.db(), sql);
   int b = 1;
@@ -336,10 +340,12 @@ JobPage JobStore::list_jobs(const JobQuery& query) {
 
 std::optional<int> JobStore::queue_position(const JobRecord& job) {
   auto lease = read();
-  // One statement, one snapshot: the job itself counts only while it is still queued.
+  // One statement, one snapshot: the job itself counts only while it is still queued. Jobs of
+  // the same millisecond are in insertion order (rowid), the order claim_next takes them in.
   Statement st(lease.db(),
                "SELECT COUNT(*) FROM jobs WHERE status = 'queued' AND "
-               "(created_ms < ? OR (created_ms = ? AND id <= ?)) AND "
+               "(created_ms < ? OR (created_ms = ? AND "
+               "rowid <= (SELECT rowid FROM jobs WHERE id = ?))) AND "
                "EXISTS (SELECT 1 FROM jobs WHERE id = ? AND status = 'queued')");
   st.bind(1, job.created_ms).bind(2, job.created_ms).bind(3, job.id).bind(4, job.id);
   st.step();
