@@ -88,6 +88,9 @@ struct ActiveLoads {
   std::vector<model::FileRequest> node_files, element_files;
   std::vector<model::ContactRequest> contact_files;
   int output_frequency = 1;  ///< ccx: the last FREQUENCY= given applies to all outputs
+  /// ccx: TIME POINTS= on an output request replaces FREQUENCY= for all outputs, until a later
+  /// FREQUENCY= (index into Model::time_points; -1: none).
+  int output_time_points = -1;
   bool nlgeom = false;       ///< ccx: NLGEOM stays active in later steps
   model::SolutionControls controls;  ///< *CONTROLS stay in force until RESET
   model::ContactControls contact_controls;  ///< likewise
@@ -121,6 +124,7 @@ struct DeckState {
   std::map<std::string, int> material_index;
   std::map<std::string, model::Orientation> orientations;  ///< *ORIENTATION by name
   std::map<std::string, int> amplitude_index;
+  std::map<std::string, int> time_points_index;  ///< *TIME POINTS by name
   std::map<std::string, int> interaction_index;
   std::vector<RawInteraction> raw_interactions;  ///< parallel to model.interactions
   std::vector<RawContactPair> contact_pairs;
