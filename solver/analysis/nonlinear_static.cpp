@@ -163,22 +163,23 @@ class NonlinearStatic {
     const model::Step& step = *sc.step;
     const Real ramp = t / sc.period, total = total_time_start_ + t;
     VecX f = cloads_prev_ * (1 - ramp) + concentrated_forces(model_, step, t, total, ramp);
-    // the previous step's distributed loads fade out as this step's take over
+    // the previous step's distributed loads fade out from their end values (amplitudes
+    // evaluated there, as ccx freezes them) as this step's take over
     const model::Step* previous = sc.previous;
     const Real previous_end = previous ? previous->procedure.period : 0;
     if (sc.loads) {
       f += distributed_forces(model_, *sc.loads, t, total, ramp);
       if (previous)
-        f += distributed_forces(model_, *sc.previous_loads, previous_end, total_time_start_,
-                                1 - ramp);
+        f += (1 - ramp) * distributed_forces(model_, *sc.previous_loads, previous_end,
+                                             total_time_start_, 1);
       return f;
     }
     const MatX3 x = model_.mesh.coords + Eigen::Map<const MatX3>(u.data(), model_.n_nodes(), 3);
     f += pressure_forces(model_, step, t, total, ramp, x) +
          body_forces(model_, step, t, total, ramp, u);  // the mass moves with NLGEOM
     if (previous)
-      f += pressure_forces(model_, *previous, previous_end, total_time_start_, 1 - ramp, x) +
-           body_forces(model_, *previous, previous_end, total_time_start_, 1 - ramp, u);
+      f += (1 - ramp) * (pressure_forces(model_, *previous, previous_end, total_time_start_, 1, x) +
+                         body_forces(model_, *previous, previous_end, total_time_start_, 1, u));
     return f;
   }
 

@@ -80,6 +80,10 @@ struct ActiveLoads {
   std::map<DofKey, model::Boundary> boundaries;
   std::map<DofKey, model::ConcentratedLoad> cloads;
   std::map<FaceKey, model::PressureLoad> pressures;
+  /// *DLOAD PnNP ("network pressure"): face -> the node whose prescribed dof 2 (*BOUNDARY) is
+  /// the pressure, resolved at each *END STEP (ccx reads it from the boundary in force), and
+  /// the data line that named it.
+  std::map<FaceKey, std::pair<int, SourceLoc>> network_pressures;
   std::map<BodyLoadKey, model::BodyLoad> body_loads;
   std::map<int, Real> temperatures;  ///< internal node -> temperature
   /// In ccx's order: the first card of a kind in a step removes the earlier entries of that

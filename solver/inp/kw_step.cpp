@@ -72,6 +72,23 @@ auto values_of(const Map& map) {
   return out;
 }
 
+/// *DLOAD PnNP: the pressure is the node's prescribed dof 2 in force at the step's end, ramped
+/// and scaled by its amplitude as the boundary value is (ccx).
+void resolve_network_pressures(ActiveLoads& active, const std::vector<int>& node_ids) {
+  for (const auto& [face, source] : active.network_pressures) {
+    const auto& [node, where] = source;
+    const auto boundary = active.boundaries.find({node, 1});
+    if (boundary == active.boundaries.end() || boundary->second.hold_previous)
+      throw InputError(where, "*DLOAD",
+                       "network pressure node " +
+                           std::to_string(node_ids[static_cast<std::size_t>(node)]) +
+                           " has no prescribed value of dof 2 (*BOUNDARY) in this step");
+    model::PressureLoad& load = active.pressures[face];
+    load.value = boundary->second.value;
+    load.amplitude = boundary->second.amplitude;
+  }
+}
+
 VecX step_temperatures(const DeckState& state) {
   if (state.active.temperatures.empty()) return {};
   VecX temps = VecX::Zero(state.model.n_nodes());
@@ -113,6 +130,7 @@ void handle_end_step(const Record& record, DeckState& state) {
   }
   model::Step step = std::move(progress.step);
   ActiveLoads& active = state.active;
+  resolve_network_pressures(active, state.model.mesh.node_ids);
   step.boundaries = values_of(active.boundaries);
   step.cloads = values_of(active.cloads);
   step.pressures = values_of(active.pressures);

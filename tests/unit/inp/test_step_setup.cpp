@@ -1,4 +1,4 @@
-// Step set-up cards: *TIME POINTS and the TIME POINTS= of output requests, and every
+// Step set-up cards: *TIME POINTS and the TIME POINTS= of output requests, *DLOAD PnNP, and every
 // malformed form (run by test_errors.cpp through step_setup_bad_decks()).
 #include <gtest/gtest.h>
 
@@ -44,6 +44,16 @@ std::vector<BadDeck> step_setup_bad_decks() {
        plus(points + "*STEP, NLGEOM\n*STATIC, DIRECT\n.1, 1.\n*NODE PRINT, NSET=TIP, "
                      "TIME POINTS=T1\nU\n*END STEP\n"),
        29, "*STEP", "DIRECT"},
+      {"network pressure node undefined",
+       plus("*STEP\n*STATIC\n*DLOAD\n2, P4NP, 99\n*END STEP\n"), 30, "*DLOAD",
+       "node 99"},
+      {"network pressure without boundary",
+       plus("*STEP\n*STATIC\n*DLOAD\n2, P4NP, 12\n*BOUNDARY\n12, 1, 1, 5.\n*END STEP\n"), 30,
+       "*DLOAD", "node 12 has no prescribed value of dof 2"},
+      {"network pressure bad face", plus("*STEP\n*STATIC\n*DLOAD\n2, P7NP, 12\n"), 30,
+       "*DLOAD", "has no face 7"},
+      {"network pressure not a node", plus("*STEP\n*STATIC\n*DLOAD\n2, P4NP, 1.5\n"), 30,
+       "*DLOAD", "1.5"},
   };
 }
 
@@ -101,6 +111,38 @@ U
   EXPECT_EQ(m.steps[1].time_points, 0);  // stays in force
   EXPECT_EQ(m.steps[2].time_points, -1);
   EXPECT_EQ(m.steps[2].prints.front().frequency, 3);
+}
+
+TEST(inpNetworkPressure, TakesTheNodesPrescribedDof2InEachStep) {
+  const model::Model m = read_deck_text(test::two_cubes_model() + R"(*BOUNDARY
+FIX, 1, 3
+*STEP
+*STATIC
+*DLOAD
+2, P4NP, 12
+*BOUNDARY
+12, 2, 2, -3.
+*END STEP
+*STEP
+*STATIC
+*BOUNDARY
+12, 2, 2, 7.
+*END STEP
+*STEP
+*STATIC
+*DLOAD
+2, P4, 1.
+*BOUNDARY
+12, 2, 2, 9.
+*END STEP
+)",
+                                        "np.inp");
+  ASSERT_EQ(m.steps.size(), 3u);
+  ASSERT_EQ(m.steps[0].pressures.size(), 1u);
+  EXPECT_EQ(m.steps[0].pressures[0].face.face, 4);
+  EXPECT_EQ(m.steps[0].pressures[0].value, -3.);
+  EXPECT_EQ(m.steps[1].pressures[0].value, 7.);  // follows the boundary
+  EXPECT_EQ(m.steps[2].pressures[0].value, 1.);  // a plain pressure replaced it
 }
 
 }  // namespace
