@@ -42,14 +42,23 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-nonlinear::StepTiming step_timing(const model::Step& step) {
+/// `total_start`: the total time at the step's start (*TIME POINTS on total time).
+nonlinear::StepTiming step_timing(const model::Model& model, const model::Step& step,
+                                  Real total_start) {
   const auto& p = step.procedure;
-  return {.period = p.period,
-          .initial_increment = p.initial_increment,
-          .min_increment = p.min_increment.value_or(0),
-          .max_increment = p.max_increment.value_or(0),
-          .direct = p.direct,
-          .max_increments = step.max_increments};
+  nonlinear::StepTiming timing{.period = p.period,
+                               .initial_increment = p.initial_increment,
+                               .min_increment = p.min_increment.value_or(0),
+                               .max_increment = p.max_increment.value_or(0),
+                               .direct = p.direct,
+                               .max_increments = step.max_increments,
+                               .time_points = {}};
+  if (step.time_points >= 0) {
+    const model::TimePoints& points = model.time_points[static_cast<std::size_t>(step.time_points)];
+    for (const Real t : points.times)
+      timing.time_points.push_back(points.total_time ? t - total_start : t);
+  }
+  return timing;
 }
 
 Real max_abs(const VecX& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0; }
@@ -134,7 +143,7 @@ class NonlinearStatic {
         options_.controls ? *options_.controls : step.controls, step.contact_controls);
     convergence_.emplace(sc.controls, last_q_bar_);
     convergence_->set_contact_criteria(contact_.criteria(), step.contact_controls.delcon);
-    increments_.emplace(step_timing(step), sc.controls);
+    increments_.emplace(step_timing(model_, step, total_time_start_), sc.controls);
     step_stabilisation_energy_ = 0;
     predictor_ = {};  // a step starts from its converged state
 
@@ -155,22 +164,23 @@ class NonlinearStatic {
     const model::Step& step = *sc.step;
     const Real ramp = t / sc.period, total = total_time_start_ + t;
     VecX f = cloads_prev_ * (1 - ramp) + concentrated_forces(model_, step, t, total, ramp);
-    // the previous step's distributed loads fade out as this step's take over
+    // the previous step's distributed loads fade out from their end values (amplitudes
+    // evaluated there, as ccx freezes them) as this step's take over
     const model::Step* previous = sc.previous;
     const Real previous_end = previous ? previous->procedure.period : 0;
     if (sc.loads) {
       f += distributed_forces(model_, *sc.loads, t, total, ramp);
       if (previous)
-        f += distributed_forces(model_, *sc.previous_loads, previous_end, total_time_start_,
-                                1 - ramp);
+        f += (1 - ramp) * distributed_forces(model_, *sc.previous_loads, previous_end,
+                                             total_time_start_, 1);
       return f;
     }
     const MatX3 x = model_.mesh.coords + Eigen::Map<const MatX3>(u.data(), model_.n_nodes(), 3);
     f += pressure_forces(model_, step, t, total, ramp, x) +
          body_forces(model_, step, t, total, ramp, u);  // the mass moves with NLGEOM
     if (previous)
-      f += pressure_forces(model_, *previous, previous_end, total_time_start_, 1 - ramp, x) +
-           body_forces(model_, *previous, previous_end, total_time_start_, 1 - ramp, u);
+      f += (1 - ramp) * (pressure_forces(model_, *previous, previous_end, total_time_start_, 1, x) +
+                         body_forces(model_, *previous, previous_end, total_time_start_, 1, u));
     return f;
   }
 
@@ -460,6 +470,7 @@ class NonlinearStatic {
     contact_.commit();
     const int increment_no = increments_->increment_number(), attempt = increments_->attempt();
     const Real dt = increments_->increment();
+    const bool at_time_point = increments_->ends_at_time_point();
     increments_->converged(it);
 
     output::Frame frame = converged_frame(model_, u_, a.ev);
@@ -469,6 +480,7 @@ class NonlinearStatic {
     frame.step_time = a.t;
     frame.total_time = total_time_start_ + a.t;
     frame.is_step_end = increments_->finished();
+    if (sc.step->time_points >= 0) frame.at_time_point = at_time_point;
     if (!contact_.empty()) {
       contact_.write_output(u_, frame);
       max_contact_pressure_ = contact_.max_pressure();

@@ -80,6 +80,10 @@ struct ActiveLoads {
   std::map<DofKey, model::Boundary> boundaries;
   std::map<DofKey, model::ConcentratedLoad> cloads;
   std::map<FaceKey, model::PressureLoad> pressures;
+  /// *DLOAD PnNP ("network pressure"): face -> the node whose prescribed dof 2 (*BOUNDARY) is
+  /// the pressure, resolved at each *END STEP (ccx reads it from the boundary in force), and
+  /// the data line that named it.
+  std::map<FaceKey, std::pair<int, SourceLoc>> network_pressures;
   std::map<BodyLoadKey, model::BodyLoad> body_loads;
   std::map<int, Real> temperatures;  ///< internal node -> temperature
   /// In ccx's order: the first card of a kind in a step removes the earlier entries of that
@@ -88,6 +92,9 @@ struct ActiveLoads {
   std::vector<model::FileRequest> node_files, element_files;
   std::vector<model::ContactRequest> contact_files;
   int output_frequency = 1;  ///< ccx: the last FREQUENCY= given applies to all outputs
+  /// ccx: TIME POINTS= on an output request replaces FREQUENCY= for all outputs, until a later
+  /// FREQUENCY= (index into Model::time_points; -1: none).
+  int output_time_points = -1;
   bool nlgeom = false;       ///< ccx: NLGEOM stays active in later steps
   model::SolutionControls controls;  ///< *CONTROLS stay in force until RESET
   model::ContactControls contact_controls;  ///< likewise
@@ -121,6 +128,7 @@ struct DeckState {
   std::map<std::string, int> material_index;
   std::map<std::string, model::Orientation> orientations;  ///< *ORIENTATION by name
   std::map<std::string, int> amplitude_index;
+  std::map<std::string, int> time_points_index;  ///< *TIME POINTS by name
   std::map<std::string, int> interaction_index;
   std::vector<RawInteraction> raw_interactions;  ///< parallel to model.interactions
   std::vector<RawContactPair> contact_pairs;

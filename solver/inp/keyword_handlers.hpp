@@ -46,6 +46,7 @@ void handle_step(const Record&, DeckState&);
 void handle_static(const Record&, DeckState&);
 void handle_end_step(const Record&, DeckState&);
 void handle_amplitude(const Record&, DeckState&);
+void handle_time_points(const Record&, DeckState&);
 void handle_equation(const Record&, DeckState&);
 void handle_initial_conditions(const Record&, DeckState&);
 

@@ -41,6 +41,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},
     {"EQUATION", M, None, handle_equation},
     {"AMPLITUDE", A, None, handle_amplitude},
+    {"TIMEPOINTS", M, None, handle_time_points},
     {"BOUNDARY", A, None, handle_boundary},
     {"STEP", M, None, handle_step},  // opens a step: checked as model-level
     {"STATIC", S, None, handle_static},

@@ -55,10 +55,17 @@ void read_boundary_line(const Record& record, const DataLine& line, DeckState& s
   }
 }
 
-/// Pressure faces named by "elem_or_elset, Pn" or "surface, P".
+/// True for ccx's PnNP: a pressure on face n whose value is a node's prescribed dof 2.
+bool is_network_pressure(const DataLine& line) {
+  const std::string label = to_upper(line.fields[1]);
+  return label.size() == 4 && label.front() == 'P' && label.ends_with("NP");
+}
+
+/// Pressure faces named by "elem_or_elset, Pn", "surface, P" or "elem_or_elset, PnNP".
 std::vector<FaceKey> pressure_faces(const Record& record, const DataLine& line,
                                     const DeckState& state) {
-  const std::string label = to_upper(line.fields[1]);
+  std::string label = to_upper(line.fields[1]);
+  if (is_network_pressure(line)) label.resize(2);
   std::vector<FaceKey> faces;
   if (label == "P") {
     const auto surface = state.surfaces.find(remove_blanks(to_upper(line.fields[0])));
@@ -81,7 +88,7 @@ std::vector<FaceKey> pressure_faces(const Record& record, const DataLine& line,
                                       : std::nullopt;
   if (!face) {
     fail(record, line, "load type " + label +
-                           " is not supported (only P1..P6, P, GRAV and CENTRIF)");
+                           " is not supported (only P1..P6, P, PnNP, GRAV and CENTRIF)");
   }
   for (int element : resolve_element_field(state, record, line, 0)) {
     faces.emplace_back(element, *face);
@@ -187,6 +194,7 @@ void handle_dload(const Record& record, DeckState& state) {
   check_params(record, {"OP", "AMPLITUDE", "TIMEDELAY"});
   if (op_new_requested(record, state)) {
     state.active.pressures.clear();
+    state.active.network_pressures.clear();
     state.active.body_loads.clear();
   }
   const int amplitude = amplitude_param(state, record);
@@ -199,9 +207,21 @@ void handle_dload(const Record& record, DeckState& state) {
     }
     const std::vector<FaceKey> faces = pressure_faces(record, line, state);  // checks the type
     require_field_count(record, line, 3, 3);
+    if (is_network_pressure(line)) {
+      // The third field is the node, not a value (ccx: its prescribed pressure, dof 2).
+      const int node = node_index_of(state, record, line, int_field(record, line, 2));
+      for (const FaceKey& key : faces) {
+        check_face_exists(record, line, state, key);
+        state.active.network_pressures[key] = {node, line.where};
+        state.active.pressures[key] = model::PressureLoad{
+            model::ElementFace{key.first, key.second}, 0, amplitude};
+      }
+      continue;
+    }
     const Real value = real_field(record, line, 2);
     for (const FaceKey& key : faces) {
       check_face_exists(record, line, state, key);
+      state.active.network_pressures.erase(key);
       model::PressureLoad& load = state.active.pressures[key];
       const bool again_in_step = !progress.pressures_in_step.insert(key).second;
       load = model::PressureLoad{model::ElementFace{key.first, key.second},

@@ -1,7 +1,8 @@
 // Output requests. ccx rules (manual, *NODE PRINT/*EL PRINT/*CONTACT PRINT/*NODE FILE/*EL FILE/
 // *CONTACT FILE): the first card of a kind within a step wipes the selections of earlier steps;
 // without one, the previous step's selections apply. The last FREQUENCY= given applies to all
-// outputs and persists. Node, element and contact prints share one list, whose order is the
+// outputs and persists; TIME POINTS= names a *TIME POINTS sequence that replaces it (output at
+// those times and the step end) until a FREQUENCY= comes. Node, element and contact prints share one list, whose order is the
 // order of the .dat blocks.
 #include <algorithm>
 #include <array>
@@ -28,7 +29,17 @@ std::vector<std::string> output_variables(const Record& record) {
 void read_frequency(const Record& record, DeckState& state) {
   if (const std::optional<int> frequency = int_param(record, "FREQUENCY")) {
     if (*frequency < 0) fail(record, "FREQUENCY= must not be negative");
+    if (has_param(record, "TIMEPOINTS"))
+      fail(record, "FREQUENCY= and TIME POINTS= exclude each other");
     state.active.output_frequency = *frequency;
+    state.active.output_time_points = -1;
+  }
+  if (const std::optional<std::string> name = name_value(record, "TIMEPOINTS")) {
+    const auto found = state.time_points_index.find(*name);
+    if (found == state.time_points_index.end())
+      fail(record, "time points " + *name + " are not defined (*TIME POINTS before the steps)");
+    state.active.output_time_points = found->second;
+    state.active.output_frequency = 1;
   }
 }
 
@@ -46,7 +57,7 @@ bool yes_no(const Record& record, std::string_view name, bool fallback) {
 
 model::PrintRequest print_request(const Record& record, DeckState& state,
                                   model::PrintRequest::Kind kind, std::string_view set_param) {
-  check_params(record, {set_param, "TOTALS", "GLOBAL", "FREQUENCY"});
+  check_params(record, {set_param, "TOTALS", "GLOBAL", "FREQUENCY", "TIMEPOINTS"});
   model::PrintRequest request;
   request.kind = kind;
   request.where = record.where;
@@ -75,7 +86,8 @@ void warn_file_layout_params(const Record& record, DeckState& state) {
 }
 
 model::FileRequest file_request(const Record& record, DeckState& state) {
-  check_params(record, {"FREQUENCY", "GLOBAL", "OUTPUT", "NSET", "ELSET", "POSITION"});
+  check_params(record,
+               {"FREQUENCY", "TIMEPOINTS", "GLOBAL", "OUTPUT", "NSET", "ELSET", "POSITION"});
   (void)yes_no(record, "GLOBAL", true);  // *NODE FILE checks it against *TRANSFORM
   warn_file_layout_params(record, state);
   read_frequency(record, state);
@@ -148,7 +160,7 @@ void handle_el_print(const Record& record, DeckState& state) {
 }
 
 void handle_contact_print(const Record& record, DeckState& state) {
-  check_params(record, {"FREQUENCY", "TOTALS", "NSET", "SLAVE", "MASTER"});
+  check_params(record, {"FREQUENCY", "TIMEPOINTS", "TOTALS", "NSET", "SLAVE", "MASTER"});
   // ccx ignores NSET= here too (friction1 has it); SLAVE= and MASTER= select the surfaces of
   // CF, CFN and CFS, which Kontakt does not print.
   for (std::string_view name : {"NSET", "SLAVE", "MASTER"})
@@ -171,8 +183,8 @@ void handle_contact_print(const Record& record, DeckState& state) {
 }
 
 void handle_contact_file(const Record& record, DeckState& state) {
-  check_params(record, {"FREQUENCY", "GLOBAL", "OUTPUT", "NSET", "LASTITERATIONS",
-                        "CONTACTELEMENTS"});
+  check_params(record, {"FREQUENCY", "TIMEPOINTS", "GLOBAL", "OUTPUT", "NSET",
+                        "LASTITERATIONS", "CONTACTELEMENTS"});
   (void)yes_no(record, "GLOBAL", true);
   warn_file_layout_params(record, state);
   // ccx's debugging files (ResultsForLastIterations.frd, contactelements.inp).

@@ -72,6 +72,23 @@ auto values_of(const Map& map) {
   return out;
 }
 
+/// *DLOAD PnNP: the pressure is the node's prescribed dof 2 in force at the step's end, ramped
+/// and scaled by its amplitude as the boundary value is (ccx).
+void resolve_network_pressures(ActiveLoads& active, const std::vector<int>& node_ids) {
+  for (const auto& [face, source] : active.network_pressures) {
+    const auto& [node, where] = source;
+    const auto boundary = active.boundaries.find({node, 1});
+    if (boundary == active.boundaries.end() || boundary->second.hold_previous)
+      throw InputError(where, "*DLOAD",
+                       "network pressure node " +
+                           std::to_string(node_ids[static_cast<std::size_t>(node)]) +
+                           " has no prescribed value of dof 2 (*BOUNDARY) in this step");
+    model::PressureLoad& load = active.pressures[face];
+    load.value = boundary->second.value;
+    load.amplitude = boundary->second.amplitude;
+  }
+}
+
 VecX step_temperatures(const DeckState& state) {
   if (state.active.temperatures.empty()) return {};
   VecX temps = VecX::Zero(state.model.n_nodes());
@@ -113,12 +130,18 @@ void handle_end_step(const Record& record, DeckState& state) {
   }
   model::Step step = std::move(progress.step);
   ActiveLoads& active = state.active;
+  resolve_network_pressures(active, state.model.mesh.node_ids);
   step.boundaries = values_of(active.boundaries);
   step.cloads = values_of(active.cloads);
   step.pressures = values_of(active.pressures);
   step.body_loads = values_of(active.body_loads);
   step.temperatures = step_temperatures(state);
   set_step_prints(active, step);
+  step.time_points = active.output_time_points;
+  // ccx refuses the combination: DIRECT fixes the increments, the points would move them.
+  if (step.time_points >= 0 && step.procedure.direct)
+    throw InputError(step.where, "*STEP",
+                     "TIME POINTS= of an output request in force with *STATIC, DIRECT");
   step.node_files = with_frequency(active.node_files, active.output_frequency);
   step.element_files = with_frequency(active.element_files, active.output_frequency);
   step.contact_files = with_frequency(active.contact_files, active.output_frequency);
@@ -178,6 +201,46 @@ void handle_amplitude(const Record& record, DeckState& state) {
   if (amplitude.points.empty()) fail(record, "amplitude has no data points");
   state.amplitude_index[name] = static_cast<int>(state.model.amplitudes.size());
   state.model.amplitudes.push_back(std::move(amplitude));
+}
+
+void handle_time_points(const Record& record, DeckState& state) {
+  check_params(record, {"NAME", "TIME", "GENERATE"});
+  const std::string name = remove_blanks(to_upper(required_value(record, "NAME")));
+  const std::string time = name_value(record, "TIME").value_or("STEPTIME");
+  if (time != "STEPTIME" && time != "TOTALTIME") fail(record, "TIME=" + time + " is not valid");
+  if (state.time_points_index.contains(name)) fail(record, "time points " + name + " defined twice");
+  model::TimePoints points;
+  points.name = name;
+  points.total_time = time == "TOTALTIME";
+  const bool generate = has_param(record, "GENERATE");
+  for (const DataLine& line : record.lines) {
+    std::vector<Real> times;
+    if (generate) {
+      // start, end, step: start, start + k step up to the end, and the end itself (ccx)
+      require_field_count(record, line, 3, 3);
+      const Real first = real_field(record, line, 0), last = real_field(record, line, 1),
+                 step = real_field(record, line, 2);
+      if (step <= 0 || last < first)
+        fail(record, line, "expected a start, an end not before it and a positive step");
+      const auto n = static_cast<long long>((last - first) / step);
+      if (n > 1000000) fail(record, line, "more than a million time points");
+      for (long long k = 0; k <= n; ++k) times.push_back(first + static_cast<Real>(k) * step);
+      times.push_back(last);
+    } else {
+      require_field_count(record, line, 1, 8);
+      for (std::size_t i = 0; i < line.fields.size(); ++i)
+        times.push_back(real_field(record, line, i));
+    }
+    for (const Real t : times) {
+      if (!points.times.empty() && t < points.times.back())
+        fail(record, line, "time points must not decrease");
+      // a repeated point (GENERATE's end) would be an increment of size zero
+      if (points.times.empty() || t > points.times.back()) points.times.push_back(t);
+    }
+  }
+  if (points.times.empty()) fail(record, "no time points given");
+  state.time_points_index[name] = static_cast<int>(state.model.time_points.size());
+  state.model.time_points.push_back(std::move(points));
 }
 
 namespace {

@@ -128,6 +128,13 @@ struct Amplitude {
   Real value_at(Real time) const;
 };
 
+/// *TIME POINTS: times at which nonlinear steps end an increment and write their output.
+struct TimePoints {
+  std::string name;
+  bool total_time = false;        ///< TIME=TOTAL TIME; otherwise step time
+  std::vector<Real> times;        ///< ascending, no repeats
+};
+
 /// One term of a linear multipoint constraint sum(coef * u[node][dof]) = 0.
 struct EquationTerm {
   int node = 0;                   ///< internal index
@@ -211,6 +218,9 @@ struct Step {
   bool nlgeom = false;
   int max_increments = 100;       ///< *STEP, INC=
   StaticProcedure procedure;
+  /// TIME POINTS= of an output request in force (index into Model::time_points): output only
+  /// at these times and at the step end, FREQUENCY= set aside (ccx); -1: none.
+  int time_points = -1;
   model::SolutionControls controls;  ///< *CONTROLS in force for this step
   std::vector<Boundary> boundaries;
   std::vector<ConcentratedLoad> cloads;
@@ -241,6 +251,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<SolidSection> sections;
   std::vector<Amplitude> amplitudes;
+  std::vector<TimePoints> time_points;
   std::vector<Equation> equations;
   /// Local nodal systems of *TRANSFORM (the last one naming a node wins, as in ccx): internal
   /// node -> its local axes as columns (model::local_frame). *BOUNDARY, *CLOAD and *EQUATION

@@ -48,6 +48,7 @@ std::vector<int> absent_labels(const model::NodeSet& set,
 }
 
 bool output_due(int frequency, const Frame& frame) {
+  if (frame.at_time_point) return frame.is_step_end || *frame.at_time_point;
   if (frequency <= 0) return false;
   return frame.is_step_end || frame.increment % frequency == 0;
 }

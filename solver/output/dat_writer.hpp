@@ -12,7 +12,8 @@
 namespace kontakt::output {
 
 /// True when print request `request` is due at `frame`: every `frequency`-th increment of the
-/// step and always at the step's last increment; never when frequency <= 0.
+/// step and always at the step's last increment; never when frequency <= 0. A step whose output
+/// follows *TIME POINTS (Frame::at_time_point engaged) prints at those and at its end only.
 /// ccx note: ccx applies ONE print frequency to all requests, the last FREQUENCY= given, carried
 /// into later steps; the deck reader is expected to store that effective value in each request.
 bool print_due(const model::PrintRequest& request, const Frame& frame);

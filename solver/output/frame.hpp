@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include <optional>
 #include <vector>
 
 #include "core/types.hpp"
@@ -45,6 +46,9 @@ struct Frame {
   Real total_time = 0;      ///< accumulated over steps; the time ccx prints in .dat headers
   bool converged = true;
   bool is_step_end = true;  ///< last increment of its step (prints are always written then)
+  /// Engaged when the step's output follows *TIME POINTS instead of FREQUENCY=: whether this
+  /// increment ended on one of them.
+  std::optional<bool> at_time_point;
 
   MatX3 U;                  ///< n_nodes x 3 displacements
   MatX3 RF;                 ///< n_nodes x 3 internal nodal forces summed over elements

@@ -295,6 +295,7 @@ std::set<std::string> requested_fields(const model::Model& model) {
 
 bool file_output_due(const model::Step& step, const Frame& frame) {
   if (frame.is_step_end) return true;
+  if (frame.at_time_point) return *frame.at_time_point;
   const auto due = [&](const auto& requests) {
     for (const auto& req : requests)
       if (req.frequency > 0 && frame.increment % req.frequency == 0) return true;

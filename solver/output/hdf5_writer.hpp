@@ -36,7 +36,8 @@ std::set<std::string> requested_fields(const model::Model& model);
 std::set<std::string> file_variables(const model::Step& step);
 
 /// True when any file request of `step` is due at `frame` (every frequency-th increment and at
-/// step end). A step without file requests is due at every step end only.
+/// step end; at the time points and the step end when the step's output follows *TIME POINTS).
+/// A step without file requests is due at every step end only.
 bool file_output_due(const model::Step& step, const Frame& frame);
 
 /// Initialises the HDF5 library and its deflate filter with a small file in memory: a process

@@ -27,5 +27,7 @@ std::vector<BadDeck> transform_bad_decks();
 std::vector<BadDeck> material_bad_decks();
 /// The plane stress / strain / axisymmetric cases (test_plane_elements.cpp).
 std::vector<BadDeck> plane_bad_decks();
+/// The step set-up cards' cases (test_step_setup.cpp).
+std::vector<BadDeck> step_setup_bad_decks();
 
 }  // namespace kontakt::inp::test

@@ -160,7 +160,7 @@ std::vector<BadDeck> contact_bad_decks() {
        35, "*CONTACT PRINT", "no output variables given"},
       {"contact print time points",
        surfaces_plus(step + "*CONTACT PRINT, TIME POINTS=T\nCDIS\n"), 35, "*CONTACT PRINT",
-       "unknown or unsupported parameter TIMEPOINTS"},
+       "time points T are not defined"},
       {"contact print before a step", surfaces_plus("*CONTACT PRINT\nCDIS\n"), 33,
        "*CONTACT PRINT", "only allowed between *STEP and *END STEP"},
       {"unknown contact file variable", surfaces_plus(step + "*CONTACT FILE\nU\n*END STEP\n"),

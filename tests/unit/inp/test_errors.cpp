@@ -166,6 +166,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedMaterial, inpErrors,
                          ::testing::ValuesIn(test::material_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedPlane, inpErrors,
                          ::testing::ValuesIn(test::plane_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedStepSetup, inpErrors,
+                         ::testing::ValuesIn(test::step_setup_bad_decks()), case_name);
 
 }  // namespace
 }  // namespace kontakt::inp

@@ -82,3 +82,62 @@ TEST(IncrementControl, IncrementCountLimitOfTheStep) {
   inc.converged(2);
   EXPECT_THROW(inc.converged(2), NonConvergence);
 }
+
+// ccx 2.20 on the suite's beamnlptp (*STATIC 1, 1; time points .4, .6, .9; 3, 2, 2, 2
+// iterations): increments 0.4, 0.2, 0.3, 0.1, output at the first three and the step end.
+TEST(IncrementControl, TimePointsEndIncrementsAndTheUnclippedSizeGrows) {
+  IncrementControl inc({.period = 1, .initial_increment = 1, .time_points = {0.4, 0.6, 0.9}}, {});
+  EXPECT_DOUBLE_EQ(inc.increment(), 0.4);
+  EXPECT_TRUE(inc.ends_at_time_point());
+  inc.converged(3);  // first fast: the size goes back to the reference 0.4, cut to 0.6
+  EXPECT_DOUBLE_EQ(inc.step_time(), 0.4);
+  EXPECT_NEAR(inc.increment(), 0.2, 1e-15);
+  EXPECT_TRUE(inc.ends_at_time_point());
+  inc.converged(2);  // second fast: 0.4 * 1.5 = 0.6, to the step end 0.4, cut to 0.9
+  EXPECT_DOUBLE_EQ(inc.step_time(), 0.6);
+  EXPECT_NEAR(inc.increment(), 0.3, 1e-15);
+  EXPECT_TRUE(inc.ends_at_time_point());
+  inc.converged(2);
+  EXPECT_DOUBLE_EQ(inc.step_time(), 0.9);
+  EXPECT_NEAR(inc.increment(), 0.1, 1e-15);
+  EXPECT_FALSE(inc.ends_at_time_point());
+  inc.converged(2);
+  EXPECT_TRUE(inc.finished());
+}
+
+TEST(IncrementControl, TimePointsDoNotShrinkTheReferenceSize) {
+  // 0.3 fixed-size-ish increments (no growth: medium convergence); the point 0.4 shortens
+  // one increment to 0.1, the next is 0.3 again.
+  model::SolutionControls c;
+  IncrementControl inc({.period = 1, .initial_increment = 0.3, .time_points = {0.4}}, c);
+  EXPECT_FALSE(inc.ends_at_time_point());
+  inc.converged(c.fast_increment_iterations + 1);
+  EXPECT_NEAR(inc.increment(), 0.1, 1e-15);
+  EXPECT_TRUE(inc.ends_at_time_point());
+  inc.converged(c.fast_increment_iterations + 1);
+  EXPECT_NEAR(inc.increment(), 0.3, 1e-15);
+  EXPECT_FALSE(inc.ends_at_time_point());
+}
+
+TEST(IncrementControl, AnIncrementEndingJustShortOfATimePointIsStretchedToIt) {
+  IncrementControl inc({.period = 1, .initial_increment = 0.5 - 5e-7, .time_points = {0.5}}, {});
+  EXPECT_DOUBLE_EQ(inc.increment(), 0.5);
+  EXPECT_TRUE(inc.ends_at_time_point());
+  IncrementControl far({.period = 1, .initial_increment = 0.5 - 2e-6, .time_points = {0.5}}, {});
+  EXPECT_DOUBLE_EQ(far.increment(), 0.5 - 2e-6);
+  EXPECT_FALSE(far.ends_at_time_point());
+}
+
+TEST(IncrementControl, ACutBackIncrementAimsAtTheTimePointAgainLater) {
+  IncrementControl inc({.period = 1, .initial_increment = 1, .time_points = {0.4}}, {});
+  inc.cut_back(0.25, "diverged");  // 0.1, the point is not reached
+  EXPECT_NEAR(inc.increment(), 0.1, 1e-15);
+  EXPECT_FALSE(inc.ends_at_time_point());
+  inc.converged(3);
+  inc.converged(3);  // 0.1, then grown to 0.15 (0.2 ... 0.35)
+  EXPECT_NEAR(inc.step_time(), 0.2, 1e-15);
+  EXPECT_NEAR(inc.increment(), 0.15, 1e-15);
+  inc.converged(3);  // 0.225 would pass 0.4
+  EXPECT_NEAR(inc.increment(), 0.05, 1e-15);
+  EXPECT_TRUE(inc.ends_at_time_point());
+}
