@@ -6,6 +6,7 @@
 #include "inp/element_names.hpp"
 #include "inp/record_access.hpp"
 #include "inp/tie_builder.hpp"
+#include "material/j2_small_strain.hpp"
 #include "model/plane_expansion.hpp"
 
 namespace kontakt::inp {
@@ -333,15 +334,13 @@ void add_initial_inelastic_strains(DeckState& state) {
     if (!material.plastic.empty()) refuse(name + " has *PLASTIC");
     if (material.elastic.rows.size() != 1) refuse(name + " is not isotropic with one *ELASTIC row");
     const auto [young, poisson] = material.elastic.rows.front();
-    const Real mu = young / (2 * (1 + poisson));
-    const Real lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
+    const Mat6 stiffness = material::isotropic_elastic_stiffness(young, poisson);
+    const Vec6 engineering_shear = (Vec6() << 1, 1, 1, 2, 2, 2).finished();
     MatX& sigma0 = model.initial_stresses[e];
     if (sigma0.size() == 0) sigma0 = MatX::Zero(strain.rows(), 6);
-    for (Eigen::Index ip = 0; ip < strain.rows(); ++ip) {
-      const Real trace = strain(ip, 0) + strain(ip, 1) + strain(ip, 2);
-      for (int c = 0; c < 6; ++c)
-        sigma0(ip, c) -= 2 * mu * strain(ip, c) + (c < 3 ? lambda * trace : 0);
-    }
+    for (Eigen::Index ip = 0; ip < strain.rows(); ++ip)
+      sigma0.row(ip) -= (stiffness * strain.row(ip).transpose().cwiseProduct(engineering_shear))
+                            .transpose();
   }
   if (!state.initial_stress_where) state.initial_stress_where = state.initial_inelastic_strain_where;
 }
