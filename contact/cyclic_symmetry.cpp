@@ -8,6 +8,7 @@
 #include <string>
 
 #include "contact/contact_surface.hpp"
+#include "contact/tie_constraints.hpp"
 
 namespace kontakt::contact {
 
@@ -28,13 +29,6 @@ Real distance_to_axis(const Vec3& p, const Vec3& from, const Vec3& to) {
   const Vec3 axis = (to - from).normalized();
   const Vec3 r = p - from;
   return (r - r.dot(axis) * axis).norm();
-}
-
-std::string labels(const model::Model& model, const std::vector<int>& nodes) {
-  std::string out;
-  for (std::size_t k = 0; k < nodes.size() && k < 10; ++k)
-    out += (k ? ", " : "") + std::to_string(model.mesh.node_ids[static_cast<std::size_t>(nodes[k])]);
-  return out + (nodes.size() > 10 ? ", ..." : "");
 }
 
 }  // namespace
@@ -94,13 +88,13 @@ int apply_cyclic_symmetry(model::Model& model, const model::Tie& tie,
   if (!found.on_axis.empty())
     throw InputError(cyclic.where, "*CYCLIC SYMMETRY MODEL",
                      at + "node(s) on the axis are not supported: " +
-                         labels(model, found.on_axis));
+                         named_nodes(model, found.on_axis));
   if (!found.unmatched.empty())
     throw InputError(cyclic.where, "*CYCLIC SYMMETRY MODEL",
                      at + std::to_string(found.unmatched.size()) + " dependent node(s) of " +
                          tie.slave + " have no node of " + tie.master +
                          " one sector away within the position tolerance " +
-                         std::to_string(tolerance) + ": " + labels(model, found.unmatched));
+                         std::to_string(tolerance) + ": " + named_nodes(model, found.unmatched));
   std::vector<int> skipped;
   int tied = 0;
   for (const auto& [dep, ind] : found.pairs) {
@@ -130,7 +124,7 @@ int apply_cyclic_symmetry(model::Model& model, const model::Tie& tie,
                              at + std::to_string(skipped.size()) +
                              " dependent node(s) keep directions already constrained (by "
                              "*BOUNDARY in the first step, or an earlier equation): " +
-                             labels(model, skipped));
+                             named_nodes(model, skipped));
   return tied;
 }
 

@@ -121,7 +121,7 @@ void report(model::Model& model, const model::Tie& tie, Real tolerance,
         " have no master face of " + tie.master + " within the position tolerance " +
         number(tolerance) +
         (tie.position_tolerance ? "" : " (the default: 2.5 % of a typical master element size)") +
-        " and stay free, not tied: " + first_items(node_labels(model, missed)));
+        " and stay free, not tied: " + named_nodes(model, missed));
   if (!skipped.empty()) {
     std::vector<std::string> dofs;
     for (const auto& [label, directions] : skipped)
@@ -181,6 +181,10 @@ void add_tied_contact(model::Model& model, const model::Tie& tie) {
 }
 
 }  // namespace
+
+std::string named_nodes(const model::Model& model, const std::vector<int>& nodes) {
+  return first_items(node_labels(model, nodes));
+}
 
 std::vector<char> constrained_dofs(const model::Model& model) {
   std::vector<char> taken(3 * static_cast<std::size_t>(model.n_nodes()), 0);

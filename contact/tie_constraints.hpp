@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "contact/aabb_tree.hpp"
@@ -55,6 +56,10 @@ std::optional<TieFoot> find_tie_foot(const TieMaster& master, const Vec3& p, Rea
 /// the dependent dof), located at `where` and marked as coming from a *TIE.
 model::Equation tie_equation(int slave, int dof, const SurfaceFace& face, const Vec2& xi,
                              const SourceLoc& where);
+
+/// Deck labels of internal nodes, ascending, the first 20 and how many more: how a warning or an
+/// error names nodes without growing with the model.
+std::string named_nodes(const model::Model& model, const std::vector<int>& nodes);
 
 /// Global dofs (3 node + component) that a tie may not make dependent: prescribed in the first
 /// step (ccx generates the ties with the first step's constraints) or already the dependent
