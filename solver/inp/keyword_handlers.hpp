@@ -35,6 +35,9 @@ void handle_contact_pair(const Record&, DeckState&);
 void handle_tie(const Record&, DeckState&);
 void handle_cyclic_symmetry_model(const Record&, DeckState&);
 
+// kw_pretension.cpp
+void handle_pretension_section(const Record&, DeckState&);
+
 // kw_transform.cpp
 void handle_transform(const Record&, DeckState&);
 /// The points a and b of a *TRANSFORM or *ORIENTATION: its one data line of six numbers.

@@ -37,6 +37,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"TIE", M, None, handle_tie},
     {"CYCLICSYMMETRYMODEL", M, None, handle_cyclic_symmetry_model},
     {"TRANSFORM", M, None, handle_transform},
+    {"PRE-TENSIONSECTION", M, None, handle_pretension_section},
     {"ORIENTATION", M, None, handle_orientation},
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},
     {"EQUATION", M, None, handle_equation},

@@ -8,6 +8,7 @@
 #include "inp/tie_builder.hpp"
 #include "material/j2_small_strain.hpp"
 #include "model/plane_expansion.hpp"
+#include "model/pretension.hpp"
 
 namespace kontakt::inp {
 
@@ -403,6 +404,7 @@ model::Model finish_model(DeckState& state) {
   for (int id : state.element_line_ids)
     element_where.push_back(state.line_locs[static_cast<std::size_t>(id)]);
   model::expand_planar_elements(model, element_where);
+  model::split_pretension_sections(model);
   return std::move(model);
 }
 

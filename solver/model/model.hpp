@@ -147,6 +147,15 @@ struct Equation {
   std::string keyword = "*EQUATION";  ///< the card it comes from (*EQUATION, *TIE), for messages
 };
 
+/// *PRE-TENSION SECTION, SURFACE=: a bolt cut along an element-face surface, opened or loaded
+/// through the first dof of a reference node (model/pretension).
+struct PretensionSection {
+  std::string surface;            ///< upper-case name of an element-face surface
+  int node = 0;                   ///< internal index of the reference node
+  Vec3 normal = Vec3::UnitX();    ///< unit, pointing away from the elements owning the faces
+  SourceLoc where;
+};
+
 /// A prescribed displacement u[node][dof] = value * amplitude(t). Fixed = value 0.
 struct Boundary {
   int node = 0;
@@ -261,6 +270,9 @@ struct Model {
   std::vector<ContactPair> contact_pairs;  ///< all pairs of the deck (model level, as in ccx)
   /// *TIE, deck order; contact::apply_ties turns them into `equations` before the analysis.
   std::vector<Tie> ties;
+  /// *PRE-TENSION SECTION, deck order; model::split_pretension_sections cuts the mesh along
+  /// them and adds their `equations` after the 2D expansion.
+  std::vector<PretensionSection> pretension_sections;
   /// *CYCLIC SYMMETRY MODEL, deck order; contact::apply_ties turns each with its tie into
   /// `equations`.
   std::vector<CyclicSymmetry> cyclic_symmetry;

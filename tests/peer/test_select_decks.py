@@ -114,6 +114,15 @@ class SelectDecks(unittest.TestCase):
         text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")
         self.assertEqual(exclusion_reason(self.deck(text)), "no *NODE PRINT / *EL PRINT")
 
+    def test_pretension_sections_qualify_without_rf_prints(self):
+        cut = "*SURFACE, NAME=CUT\n1, S2\n*PRE-TENSION SECTION, SURFACE=CUT, NODE=9\n0, 0, 1\n*BOUNDARY\n"
+        text = GOOD.replace("*BOUNDARY\n", cut, 1)
+        self.assertEqual(exclusion_reason(self.deck(text)),
+                         "*PRE-TENSION SECTION with *NODE PRINT of RF")
+        self.assertIsNone(exclusion_reason(self.deck(text.replace("U, RF\n", "U\n"))))
+        beam = text.replace("SURFACE=CUT, NODE", "ELEMENT=3, NODE").replace("U, RF\n", "U\n")
+        self.assertEqual(exclusion_reason(self.deck(beam)), "*PRE-TENSION SECTION without SURFACE=")
+
     def test_first_violation_wins(self):
         text = GOOD.replace("TYPE=C3D8,", "TYPE=B32,").replace("*STEP\n", "*STEP, NLGEOM\n")
         self.assertEqual(exclusion_reason(self.deck(text)), "element B32")

@@ -23,6 +23,9 @@ std::vector<BadDeck> tie_bad_decks();
 /// The *TRANSFORM cases (test_transform.cpp).
 std::vector<BadDeck> transform_bad_decks();
 
+/// The *PRE-TENSION SECTION cases (test_pretension.cpp).
+std::vector<BadDeck> pretension_bad_decks();
+
 /// The material cards' cases (test_material.cpp).
 std::vector<BadDeck> material_bad_decks();
 /// The plane stress / strain / axisymmetric cases (test_plane_elements.cpp).

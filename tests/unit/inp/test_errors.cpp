@@ -162,6 +162,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_
                          case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTransform, inpErrors,
                          ::testing::ValuesIn(test::transform_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedPretension, inpErrors,
+                         ::testing::ValuesIn(test::pretension_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedMaterial, inpErrors,
                          ::testing::ValuesIn(test::material_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedPlane, inpErrors,
