@@ -89,7 +89,9 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
 
 void ContactSystem::begin_step(const model::Step& step) {
   frictional_ = false;
-  for (Pair& pair : pairs_) {
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    Pair& pair = pairs_[p];
+    pair.active = p >= step.contact_pair_active.size() || step.contact_pair_active[p];
     const auto index = static_cast<std::size_t>(pair.def->interaction);
     if (index < step.interaction_behavior.size()) {  // *CHANGE SURFACE BEHAVIOR
       pair.behavior = step.interaction_behavior[index];
@@ -236,6 +238,7 @@ void ContactSystem::find_candidates(Unit& unit, const VecX& u,
   // (gaps up to 1 % of a body 200 elements across), and no more, however coarse the surfaces
   // are elsewhere. A point that slides farther is caught by missed_contact.
   unit.candidates.clear();
+  if (!pair.active) return;
   for (int m : trees[unit.pair].overlapping(region.box.inflated(kCandidateMargin * region.size)))
     if (faces_slave(face_geometry(pair.master.faces[m], model_.mesh.coords, u), region))
       unit.candidates.push_back(m);
@@ -753,6 +756,7 @@ MissedContact ContactSystem::missed_contact(const VecX& u,
       if (pt.trial.active) overclosure = std::max(overclosure, -pt.trial.gap);
   MissedContact worst;
   for (const Unit& unit : units_) {
+    if (!pairs_[unit.pair].active) continue;
     const FaceGeometry slave = slave_geometry(unit, u);
     coordinates = std::max(coordinates, slave.x.cwiseAbs().maxCoeff());
     const FreshMasters fresh = fresh_masters(unit, slave, trees[unit.pair], u);

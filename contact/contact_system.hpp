@@ -231,6 +231,7 @@ class ContactSystem {
     PressureLaw law;            ///< the scheme's law for this behaviour
     Real penalty = 0;           ///< reference_stiffness(law): scales the stabilisation
     std::optional<CoulombLaw> friction;  ///< in force for the current step
+    bool active = true;         ///< *MODEL CHANGE: a removed pair offers its points no master
     ContactSurface slave, master;
     /// node-to-surface: the faces nodal areas come from (the slave faces, or for a node-based
     /// slave surface the exterior faces at its nodes) and, per node, (face, local node)

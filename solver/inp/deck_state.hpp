@@ -100,6 +100,8 @@ struct ActiveLoads {
   model::ContactControls contact_controls;  ///< likewise
   /// *CHANGE FRICTION: interaction index -> the friction that replaces the model's one.
   std::map<int, model::Friction> friction_changes;
+  /// *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE: indices into DeckState::contact_pairs.
+  std::set<int> removed_contact_pairs;
   /// *CHANGE SURFACE BEHAVIOR: interaction index -> the behavior that replaces the model's one
   /// (defaults resolved at its card).
   std::map<int, model::SurfaceBehavior> behavior_changes;

@@ -35,6 +35,9 @@ void handle_contact_pair(const Record&, DeckState&);
 void handle_tie(const Record&, DeckState&);
 void handle_cyclic_symmetry_model(const Record&, DeckState&);
 
+// kw_model_change.cpp
+void handle_model_change(const Record&, DeckState&);
+
 // kw_pretension.cpp
 void handle_pretension_section(const Record&, DeckState&);
 

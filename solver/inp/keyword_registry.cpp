@@ -48,6 +48,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"STATIC", S, None, handle_static},
     {"CONTROLS", S, None, handle_controls},
     {"CHANGEFRICTION", S, Inter, handle_change_friction},
+    {"MODELCHANGE", S, None, handle_model_change},
     {"CHANGESURFACEBEHAVIOR", S, Inter, handle_change_surface_behavior},
     {"ENDSTEP", S, None, handle_end_step},
     {"CLOAD", S, None, handle_cload},

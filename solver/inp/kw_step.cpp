@@ -145,6 +145,8 @@ void handle_end_step(const Record& record, DeckState& state) {
   step.node_files = with_frequency(active.node_files, active.output_frequency);
   step.element_files = with_frequency(active.element_files, active.output_frequency);
   step.contact_files = with_frequency(active.contact_files, active.output_frequency);
+  step.contact_pair_active.assign(state.contact_pairs.size(), 1);
+  for (int p : active.removed_contact_pairs) step.contact_pair_active[static_cast<std::size_t>(p)] = 0;
   state.step_friction_changes.push_back(active.friction_changes);
   state.step_behavior_changes.push_back(active.behavior_changes);
   active.nlgeom = step.nlgeom;

@@ -245,6 +245,10 @@ struct Step {
   /// Per interaction (Model::interactions order): the friction in force in this step, i.e. the
   /// interaction's *FRICTION as changed by *CHANGE FRICTION in this or an earlier step.
   std::vector<std::optional<Friction>> interaction_friction;
+  /// Per *CONTACT PAIR of the deck (Model::contact_pairs order): 0 where *MODEL CHANGE, TYPE=
+  /// CONTACT PAIR, REMOVE took it out in this or an earlier step (and no ADD brought it back).
+  /// Pairs beyond the vector (TIED pairs of *TIE) are active.
+  std::vector<char> contact_pair_active;
   /// Per interaction: the *SURFACE BEHAVIOR in force in this step (the interaction's own, as
   /// changed by *CHANGE SURFACE BEHAVIOR in this or an earlier step).
   std::vector<SurfaceBehavior> interaction_behavior;

@@ -17,6 +17,11 @@ x = 0, pushed down at its free end under NLGEOM):
   amplitude_steps, amplitude_steps_small  a pressure with an amplitude in step 1 (ending at
                0.6 of its value), a new value in step 2: it goes over from its end value
                (step 2 with NLGEOM and with NLGEOM=NO).
+  contact_pair_change  not the bar: a 2 x 2 block pressed onto a 3 x 3 one (C3D8, rollers,
+               surface-to-surface), its contact pair taken out by *MODEL CHANGE, REMOVE (the
+               top block pushed on through the lower one, then lifted off) and put back by ADD
+               (pressed again), both blocks pulled along x throughout: the contact stresses
+               vanish and come back as ccx's.
 
 Usage: check_setup_decks.py --kontakt PATH [--work DIR] [--only NAME...]
 Exit code 0 when every deck agrees with ccx.
@@ -30,7 +35,9 @@ import tempfile
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verification"))
 import compare_dat  # noqa: E402
+import meshgen  # noqa: E402
 
 TOLERANCE = 1e-3  # the nonlinear peer measure: iterates stop within the residual tolerance
 
@@ -129,7 +136,49 @@ def pressure_amplitude_deck(nlgeom):
     return "\n".join(lines) + "\n"
 
 
+def contact_pair_change_deck():
+    # Upper block (nodes and elements from 1001) on the lower one; rollers on the x = 0 and
+    # y = 0 faces and under the lower block, the upper top moved in z step by step.
+    lower = meshgen.box_mesh("C3D8", (3, 3, 1), size=(1.0, 1.0, 0.5))
+    upper = meshgen.box_mesh("C3D8", (2, 2, 1), size=(1.0, 1.0, 0.5), origin=(0.0, 0.0, 0.5))
+    lines = ["*HEADING", "Kontakt *MODEL CHANGE check", "*NODE, NSET=NALL"]
+    for offset, mesh in ((0, lower), (1000, upper)):
+        lines += [f"{offset + n}, {x:.6g}, {y:.6g}, {z:.6g}" for n, (x, y, z) in mesh.nodes.items()]
+    for offset, mesh, name in ((0, lower, "LOWER"), (1000, upper, "UPPER")):
+        lines.append(f"*ELEMENT, TYPE=C3D8, ELSET={name}")
+        lines += [f"{offset + e}, " + ", ".join(str(offset + n) for n in c)
+                  for e, c in mesh.elements.items()]
+        for nset in ("XMIN", "XMAX", "YMIN", "ZMIN", "ZMAX"):
+            lines += [f"*NSET, NSET={name}_{nset}",
+                      ", ".join(str(offset + n) for n in mesh.nsets[nset])]
+    lines.append("*SURFACE, NAME=SLAVE")
+    lines += [f"{1000 + e}, S{f}" for e, f in upper.faces_on("ZMIN")]
+    lines.append("*SURFACE, NAME=MASTER")
+    lines += [f"{e}, S{f}" for e, f in lower.faces_on("ZMAX")]
+    lines += ["*ELSET, ELSET=EALL", "LOWER, UPPER",
+              "*MATERIAL, NAME=EL", "*ELASTIC", "210000., 0.3",
+              "*SOLID SECTION, ELSET=EALL, MATERIAL=EL",
+              "*SURFACE INTERACTION, NAME=SI", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
+              "1e7, 1.",
+              "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE", "SLAVE, MASTER",
+              "*BOUNDARY", "LOWER_ZMIN, 3, 3", "LOWER_XMIN, 1, 1", "LOWER_YMIN, 2, 2",
+              "UPPER_XMIN, 1, 1", "UPPER_YMIN, 2, 2"]
+    steps = [("", -0.01), ("*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE", -0.03),
+             ("", 0.005), ("*MODEL CHANGE, TYPE=CONTACT PAIR, ADD", -0.01)]
+    for k, (change, top) in enumerate(steps):
+        lines += ["*STEP, NLGEOM", "*STATIC, DIRECT", ".5, 1."]
+        lines += [change, "SLAVE, MASTER"] if change else []
+        lines += ["*BOUNDARY", f"UPPER_ZMAX, 3, 3, {top}"]
+        if k == 0:  # a pull along x keeps both blocks stressed while the pair is out
+            lines += ["*CLOAD", "UPPER_XMAX, 1, 10.", "LOWER_XMAX, 1, 10.",
+                      "*NODE PRINT, NSET=NALL", "U", "*NODE PRINT, NSET=UPPER_XMIN", "RF",
+                      "*EL PRINT, ELSET=EALL", "S"]
+        lines.append("*END STEP")
+    return "\n".join(lines) + "\n"
+
+
 DECKS = {
+    "contact_pair_change": contact_pair_change_deck,
     "time_points": time_points_deck,
     "network_pressure": network_pressure_deck,
     "amplitude_steps": lambda: pressure_amplitude_deck(True),

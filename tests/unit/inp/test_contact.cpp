@@ -240,6 +240,18 @@ TEST(inpContact, ChangeFrictionActsFromItsStepOn) {
   EXPECT_DOUBLE_EQ(m.interactions[0].friction->mu, 0.2);  // the model's own is kept
 }
 
+TEST(inpContact, ModelChangeTakesPairsOutAndBackFromItsStepOn) {
+  const std::string change = "*STEP\n*STATIC\n*MODEL CHANGE, TYPE=CONTACT PAIR, ";
+  const Model m = read(test::linear_interaction() +
+                       "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSLAVE, MASTER\n"
+                       "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nMASTER, SLAVE\n" +
+                       kStep + change + "REMOVE\nSLAVE, MASTER\n*END STEP\n" + kStep + change +
+                       "ADD\nSLAVE, MASTER\n*END STEP\n");
+  ASSERT_EQ(m.steps.size(), 4u);
+  const std::vector<std::vector<char>> expected{{1, 1}, {0, 1}, {0, 1}, {1, 1}};
+  for (std::size_t s = 0; s < 4; ++s) EXPECT_EQ(m.steps[s].contact_pair_active, expected[s]) << s;
+}
+
 TEST(inpContact, ChangeSurfaceBehaviorActsFromItsStepOn) {
   // changesurfbeh's pattern: TIED in step 1, LINEAR (here with ccx's default K) from step 2 on.
   const Model m = read("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, "

@@ -150,6 +150,39 @@ std::vector<BadDeck> contact_bad_decks() {
       {"change surface behavior in the model",
        surfaces_plus("*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n"), 33,
        "*CHANGE SURFACE BEHAVIOR", "only allowed between *STEP and *END STEP"},
+      // *MODEL CHANGE (si: lines 33-35, the pair 36-37, the step 38-39)
+      {"model change of elements",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, TYPE=ELEMENT, REMOVE\n1\n*END STEP\n"),
+       40, "*MODEL CHANGE", "TYPE=ELEMENT (deactivating and activating elements) is not supported"},
+      {"model change without type",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, REMOVE\nSLAVE, MASTER\n*END STEP\n"),
+       40, "*MODEL CHANGE", "TYPE= is required"},
+      {"model change of an unknown type",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, TYPE=SURFACE, REMOVE\nSLAVE, MASTER\n*END STEP\n"),
+       40, "*MODEL CHANGE", "TYPE=SURFACE: expected CONTACT PAIR"},
+      {"model change adding and removing",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, TYPE=CONTACT PAIR, ADD, REMOVE\nSLAVE, MASTER\n*END STEP\n"),
+       40, "*MODEL CHANGE", "exactly one of ADD and REMOVE is required"},
+      {"model change neither adding nor removing",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, TYPE=CONTACT PAIR\nSLAVE, MASTER\n*END STEP\n"),
+       40, "*MODEL CHANGE", "exactly one of ADD and REMOVE is required"},
+      {"model change of a pair that is not there",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE\nMASTER, SLAVE\n*END STEP\n"),
+       41, "*MODEL CHANGE", "no *CONTACT PAIR has slave surface MASTER and master surface SLAVE"},
+      {"model change with one surface",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
+                     "*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE\nSLAVE\n*END STEP\n"),
+       41, "*MODEL CHANGE", "expected at least 2 field(s)"},
+      {"model change in the model",
+       surfaces_plus(si + s2s + "\nSLAVE, MASTER\n*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE\n"
+                     "SLAVE, MASTER\n"),
+       38, "*MODEL CHANGE", "only allowed between *STEP and *END STEP"},
       // *CONTACT PRINT, *CONTACT FILE
       {"unknown contact print variable",
        surfaces_plus(step + "*CONTACT PRINT\nCDIS, CPRESS\n*END STEP\n"), 36, "*CONTACT PRINT",
