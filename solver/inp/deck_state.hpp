@@ -27,6 +27,7 @@ struct RawSet {
   std::vector<int> labels;
   std::vector<int> line_ids;     ///< index into DeckState::line_locs, parallel to labels
   std::vector<model::LabelRange> ranges;
+  std::vector<model::LabelRange> sequence;  ///< labels and ranges in deck order (print order)
 };
 
 struct RawFace {

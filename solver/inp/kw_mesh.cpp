@@ -25,6 +25,7 @@ RawSet& open_set(std::map<std::string, RawSet>& sets, const std::string& name,
 void add_label(RawSet& set, int label, int line_id) {
   set.labels.push_back(label);
   set.line_ids.push_back(line_id);
+  set.sequence.push_back(model::LabelRange{label, label, 1});
 }
 
 /// GENERATE data: first, last[, increment].
@@ -36,6 +37,7 @@ void add_generated(const Record& record, const DataLine& line, RawSet& set) {
   if (step <= 0) fail(record, line, "GENERATE increment must be positive");
   if (last < first) fail(record, line, "GENERATE range ends before it starts");
   set.ranges.push_back(model::LabelRange{first, last, step});
+  set.sequence.push_back(set.ranges.back());
 }
 
 /// Labels and names of other sets, mixed; a name means all members of that set.
@@ -60,6 +62,7 @@ void add_listed(const Record& record, const DataLine& line, std::map<std::string
     set.labels.insert(set.labels.end(), copy.labels.begin(), copy.labels.end());
     set.line_ids.insert(set.line_ids.end(), copy.line_ids.begin(), copy.line_ids.end());
     set.ranges.insert(set.ranges.end(), copy.ranges.begin(), copy.ranges.end());
+    set.sequence.insert(set.sequence.end(), copy.sequence.begin(), copy.sequence.end());
   }
 }
 

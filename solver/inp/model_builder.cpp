@@ -45,17 +45,6 @@ std::vector<int> existing_labels(const model::LabelRange& range,
   return labels;
 }
 
-/// The GENERATE ranges of a node set that name labels without a node.
-std::vector<model::LabelRange> ranges_with_absent_labels(const DeckState& state,
-                                                         const RawSet& set) {
-  std::vector<model::LabelRange> ranges;
-  for (const model::LabelRange& range : set.ranges)
-    if (static_cast<long long>(existing_labels(range, state.model.mesh.node_index).size()) <
-        range.count())
-      ranges.push_back(range);
-  return ranges;
-}
-
 }  // namespace
 
 std::vector<std::pair<int, int>> set_labels(const RawSet& set,
@@ -169,12 +158,11 @@ void resolve_connectivity(DeckState& state) {
 void build_sets(DeckState& state) {
   for (const auto& [name, set] : state.node_sets) {
     state.model.node_sets[name] =
-        model::NodeSet{name, node_set_members(state, set, name),
-                       ranges_with_absent_labels(state, set)};
+        model::NodeSet{name, node_set_members(state, set, name), set.sequence};
   }
   for (const auto& [name, set] : state.element_sets) {
     state.model.element_sets[name] =
-        model::ElementSet{name, element_set_members(state, set, name)};
+        model::ElementSet{name, element_set_members(state, set, name), set.sequence};
   }
 }
 

@@ -62,17 +62,21 @@ struct LabelRange {
   }
 };
 
-/// Sets are stored sorted by deck label and free of duplicates (the order ccx prints them in).
+/// Members are stored sorted by deck label and free of duplicates. ccx 2.20 prints a set as it
+/// was defined instead: its labels and GENERATE ranges in deck order, a set named in a set
+/// standing for its entries at that card, duplicates kept (and summed twice in TOTALS=),
+/// labels without a node or element up to the largest label printed as zero rows (nodes) or
+/// skipped (elements). `print_order` keeps that sequence, a label as a range of one; sets
+/// Kontakt builds itself leave it empty and print their members.
 struct NodeSet {
   std::string name;               ///< upper case, as ccx prints it
   std::vector<int> nodes;         ///< internal indices
-  /// GENERATE ranges that name labels without a node. Those carry no dof; ccx still prints
-  /// them in *NODE PRINT blocks (as zero rows), so the .dat writer does too.
-  std::vector<LabelRange> ranges_with_absent_labels{};
+  std::vector<LabelRange> print_order{};
 };
 struct ElementSet {
   std::string name;
   std::vector<int> elements;      ///< internal indices
+  std::vector<LabelRange> print_order{};
 };
 
 struct ElementFace {

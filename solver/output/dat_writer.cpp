@@ -34,17 +34,25 @@ std::string total_row(It begin, It end) {
   return s;
 }
 
-/// Labels the set's GENERATE ranges name that have no node, sorted and unique: as many as the
-/// rows the print asks for, so expanding them here costs no more than writing them.
-std::vector<int> absent_labels(const model::NodeSet& set,
-                               const std::unordered_map<int, int>& node_index) {
-  std::vector<int> absent;
-  for (const model::LabelRange& range : set.ranges_with_absent_labels)
-    for (long long label = range.first; label <= range.last; label += range.step)
-      if (!node_index.contains(static_cast<int>(label))) absent.push_back(static_cast<int>(label));
-  std::sort(absent.begin(), absent.end());
-  absent.erase(std::unique(absent.begin(), absent.end()), absent.end());
-  return absent;
+/// One row per entry of a set's print order (model::NodeSet), its labels up to `largest`:
+/// (label, internal index or -1 where `index` has no such label). Without a print order, the
+/// members in label order. As many entries as the print writes rows.
+std::vector<std::pair<int, int>> print_rows(const std::vector<model::LabelRange>& order,
+                                            const std::vector<int>& members,
+                                            const std::unordered_map<int, int>& index,
+                                            int largest, const auto& label_of) {
+  std::vector<std::pair<int, int>> rows;
+  if (order.empty()) {
+    for (int member : members) rows.emplace_back(label_of(member), member);
+    return rows;
+  }
+  for (const model::LabelRange& range : order)
+    for (long long label = range.first; label <= std::min<long long>(range.last, largest);
+         label += range.step) {
+      const auto found = index.find(static_cast<int>(label));
+      rows.emplace_back(static_cast<int>(label), found == index.end() ? -1 : found->second);
+    }
+  return rows;
 }
 
 bool output_due(int frequency, const Frame& frame) {
@@ -66,6 +74,9 @@ bool print_due(const model::ContactRequest& request, const Frame& frame) {
 DatWriter::DatWriter(const model::Model& model, std::filesystem::path path)
     : model_(model), path_(std::move(path)), out_(path_, std::ios::out | std::ios::trunc) {
   if (!out_) throw SolverError("cannot create " + path_.string());
+  for (int label : model.mesh.node_ids) largest_node_label_ = std::max(largest_node_label_, label);
+  for (const model::Element& el : model.mesh.elements)
+    largest_element_label_ = std::max(largest_element_label_, el.id);
 }
 
 void DatWriter::header(std::string_view prefix, const std::string& set, const Frame& f) {
@@ -96,23 +107,22 @@ void DatWriter::write(const model::Step& step, const Frame& frame) {
 void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
   const auto it = model_.node_sets.find(r.set);
   if (it == model_.node_sets.end()) throw SolverError("*NODE PRINT: unknown node set " + r.set);
-  const auto& nodes = it->second.nodes;
   const auto& ids = model_.mesh.node_ids;
-  // Labels a GENERATE range named without a node print as zero rows, in label order (ccx).
-  const std::vector<int> absent = absent_labels(it->second, model_.mesh.node_index);
+  // Labels without a node print as zero rows (ccx).
+  const std::vector<std::pair<int, int>> printed =
+      print_rows(it->second.print_order, it->second.nodes, model_.mesh.node_index,
+                 largest_node_label_, [&](int n) { return ids[static_cast<std::size_t>(n)]; });
   // ccx prints a transformed node's vectors in its local system, flagged " L", unless
   // GLOBAL=YES.
   auto rows = [&](const MatX3& m) {
     KONTAKT_REQUIRE(m.rows() == model_.n_nodes(), "DatWriter: nodal array has wrong size");
-    auto next_absent = absent.begin();
-    auto zero_rows_below = [&](int label) {
-      for (; next_absent != absent.end() && *next_absent < label; ++next_absent)
-        out_ << i10(*next_absent) << ' ' << fortran_e13_6(0.0) << ' ' << fortran_e13_6(0.0) << ' '
-             << fortran_e13_6(0.0) << '\n';
-    };
-    for (int n : nodes) {
-      zero_rows_below(ids[static_cast<std::size_t>(n)]);
-      out_ << i10(ids[static_cast<std::size_t>(n)]);
+    for (const auto& [label, n] : printed) {
+      out_ << i10(label);
+      if (n < 0) {
+        out_ << ' ' << fortran_e13_6(0.0) << ' ' << fortran_e13_6(0.0) << ' ' << fortran_e13_6(0.0)
+             << '\n';
+        continue;
+      }
       const auto frame = r.global ? model_.local_frames.end() : model_.local_frames.find(n);
       const bool local = frame != model_.local_frames.end();
       const Vec3 v = local ? Vec3(frame->second.transpose() * m.row(n).transpose())
@@ -120,7 +130,6 @@ void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
       for (int c = 0; c < 3; ++c) out_ << ' ' << fortran_e13_6(v[c]);
       out_ << (local ? " L\n" : "\n");
     }
-    zero_rows_below(std::numeric_limits<int>::max());
   };
   for (const auto& var : r.variables) {
     if (var == "U") {
@@ -133,8 +142,9 @@ void DatWriter::node_request(const model::PrintRequest& r, const Frame& f) {
       }
       if (r.totals != model::Totals::No) {
         Real t[3] = {0, 0, 0};
-        for (int n : nodes)
-          for (int c = 0; c < 3; ++c) t[c] += f.RF(n, c);
+        for (const auto& [label, n] : printed)
+          if (n >= 0)
+            for (int c = 0; c < 3; ++c) t[c] += f.RF(n, c);
         header(dat_header_prefix(DatBlock::RF_TOTAL), r.set, f);
         out_ << total_row(t, t + 3) << '\n';
       }
@@ -146,8 +156,14 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
   const auto it = model_.element_sets.find(r.set);
   if (it == model_.element_sets.end())
     throw SolverError("*EL PRINT: unknown element set " + r.set);
-  const auto& elems = it->second.elements;
   const auto& mesh = model_.mesh;
+  // Labels without an element print nothing (ccx).
+  std::vector<int> elems;
+  for (const auto& [label, e] : print_rows(it->second.print_order, it->second.elements,
+                                           mesh.element_index, largest_element_label_, [&](int e) {
+                                             return mesh.elements[static_cast<std::size_t>(e)].id;
+                                           }))
+    if (e >= 0) elems.push_back(e);
   const auto need_ip = [&](Index rows) {
     KONTAKT_REQUIRE(f.ip_offset.size() == static_cast<std::size_t>(model_.n_elements()) + 1,
                     "DatWriter: frame ip_offset has wrong size");

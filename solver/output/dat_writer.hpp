@@ -48,6 +48,7 @@ class DatWriter {
   const model::Model& model_;
   std::filesystem::path path_;
   std::ofstream out_;
+  int largest_node_label_ = 0, largest_element_label_ = 0;  ///< where print orders stop (ccx)
 };
 
 }  // namespace kontakt::output

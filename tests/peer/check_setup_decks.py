@@ -17,6 +17,10 @@ x = 0, pushed down at its free end under NLGEOM):
   amplitude_steps, amplitude_steps_small  a pressure with an amplitude in step 1 (ending at
                0.6 of its value), a new value in step 2: it goes over from its end value
                (step 2 with NLGEOM and with NLGEOM=NO).
+  set_print_order  sets printed as ccx prints them: unsorted labels, a set made of two
+               overlapping sets (duplicates kept, counted twice in TOTALS=), a GENERATE range
+               naming labels without a node (zero rows up to the largest label, none beyond),
+               element sets in deck order.
   contact_pair_change  not the bar: a 2 x 2 block pressed onto a 3 x 3 one (C3D8, rollers,
                surface-to-surface), its contact pair taken out by *MODEL CHANGE, REMOVE (the
                top block pushed on through the lower one, then lifted off) and put back by ADD
@@ -136,6 +140,27 @@ def pressure_amplitude_deck(nlgeom):
     return "\n".join(lines) + "\n"
 
 
+def set_print_order_deck():
+    # Node 100 (no element) makes 100 the largest label: the range's 24, 31, 38 print as zero
+    # rows, 45 and beyond not at all.
+    lines = model_lines(extra_nodes=[100])
+    lines += ["*NSET, NSET=UNSORTED", "20, 5, 15, 1, 5",
+              "*NSET, NSET=GEN, GENERATE", "3, 200, 7",
+              "*NSET, NSET=BOTH", "TIP, UNSORTED",
+              "*NSET, NSET=BOTH", "GEN",
+              "*ELSET, ELSET=EUNSORTED", "3, 1, 3",
+              "*ELSET, ELSET=EBOTH", "EUNSORTED, EALL",
+              "*STEP, NLGEOM", "*STATIC", ".5, 1.",
+              "*CLOAD", "TIP, 2, -500.",
+              "*NODE PRINT, NSET=UNSORTED", "U",
+              "*NODE PRINT, NSET=BOTH, TOTALS=YES", "RF",
+              "*NODE PRINT, NSET=GEN", "U",
+              "*EL PRINT, ELSET=EBOTH, TOTALS=YES", "EVOL",
+              "*EL PRINT, ELSET=EUNSORTED", "S",
+              "*END STEP"]
+    return "\n".join(lines) + "\n"
+
+
 def contact_pair_change_deck():
     # Upper block (nodes and elements from 1001) on the lower one; rollers on the x = 0 and
     # y = 0 faces and under the lower block, the upper top moved in z step by step.
@@ -178,6 +203,7 @@ def contact_pair_change_deck():
 
 
 DECKS = {
+    "set_print_order": set_print_order_deck,
     "contact_pair_change": contact_pair_change_deck,
     "time_points": time_points_deck,
     "network_pressure": network_pressure_deck,

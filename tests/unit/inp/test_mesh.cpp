@@ -103,10 +103,28 @@ TEST(inpMesh, GenerateRangesSkipUndefinedLabelsLikeCcx) {
   EXPECT_EQ(m.element_sets.at("EGAP").elements.size(), 2u);
   EXPECT_EQ(m.surfaces.at("NS").nodes.size(), 12u);
   // The range is kept for the print: ccx prints its labels without a node as zero rows.
-  const auto& ranges = m.node_sets.at("GAP").ranges_with_absent_labels;
+  const auto& ranges = m.node_sets.at("GAP").print_order;
   ASSERT_EQ(ranges.size(), 1u);
   EXPECT_EQ(ranges[0].first, 1);
   EXPECT_EQ(ranges[0].last, 100);
+}
+
+TEST(inpMesh, SetsKeepCcxsPrintOrderBesideTheirSortedMembers) {
+  std::string deck = test::two_cubes_model();
+  deck += "*NSET, NSET=A\n9, 2, 9\n*NSET, NSET=B, GENERATE\n1, 5, 2\n*NSET, NSET=C\nA, 4\nB\n"
+          "*ELSET, ELSET=E\n2, 1\n";
+  const Model m = read_deck_text(deck);
+  const auto order = [](const std::vector<model::LabelRange>& ranges) {
+    std::vector<std::array<int, 3>> out;
+    for (const auto& r : ranges) out.push_back({r.first, r.last, r.step});
+    return out;
+  };
+  using R = std::vector<std::array<int, 3>>;
+  EXPECT_EQ(labels_of_nodes(m, m.node_sets.at("C").nodes), (std::vector<int>{1, 2, 3, 4, 5, 9}));
+  EXPECT_EQ(order(m.node_sets.at("C").print_order),
+            (R{{9, 9, 1}, {2, 2, 1}, {9, 9, 1}, {4, 4, 1}, {1, 5, 2}}));
+  EXPECT_EQ(order(m.element_sets.at("E").print_order), (R{{2, 2, 1}, {1, 1, 1}}));
+  EXPECT_EQ(order(m.element_sets.at("EALL").print_order), (R{{1, 1, 1}, {2, 2, 1}}));
 }
 
 TEST(inpMesh, AGenerateRangeCostsWhatTheMeshHasNotWhatItNames) {
@@ -123,7 +141,7 @@ TEST(inpMesh, AGenerateRangeCostsWhatTheMeshHasNotWhatItNames) {
   EXPECT_EQ(m.node_sets.at("BOTH").nodes.size(), 12u);
   EXPECT_EQ(m.element_sets.at("EHUGE").elements.size(), 2u);
   EXPECT_EQ(m.surfaces.at("NS").nodes.size(), 3u);
-  EXPECT_EQ(m.node_sets.at("BOTH").ranges_with_absent_labels.size(), 2u);
+  EXPECT_EQ(m.node_sets.at("BOTH").print_order.size(), 2u);
 }
 
 TEST(inpMesh, AListedLabelWithoutANodeIsAnErrorEvenBesideARangeThatNamesIt) {

@@ -212,25 +212,26 @@ TEST(DatWriter, MultiplePointsPerElementAndLargeLabels) {
   EXPECT_NE(text.find("\n   1234567  12  1.000000E+00\n"), std::string::npos);
 }
 
-TEST(DatWriter, AbsentGeneratedLabelsPrintAsZeroRowsInLabelOrder) {
+TEST(DatWriter, SetsPrintInTheirDeckOrderWithDuplicatesAndZeroRowsUpToTheLargestLabel) {
   auto m = test::two_tets();
-  // 10 and 20 are FIX's nodes (and the only ones the ranges name), 15 is named twice:
-  // rows 5, 10, 15, 20, 25, 55, 65.
-  m.node_sets["FIX"].ranges_with_absent_labels = {{55, 65, 10}, {5, 25, 5}, {15, 15, 1}};
+  // 10 and 20 are FIX's nodes; the largest node label is 50: 55 is not printed, the other
+  // labels without a node are zero rows; 20 twice, and twice in the total.
+  m.node_sets["FIX"].print_order = {{20, 20, 1}, {5, 55, 10}, {20, 20, 1}};
   auto& step = m.steps[0];
-  step.prints = {node("FIX", {"U"})};
-  const auto path = tmp("absent.dat");
+  step.prints = {node("FIX", {"U", "RF"}, model::Totals::Yes)};
+  const auto path = tmp("order.dat");
   {
     DatWriter w(m, path);
     w.write(step, two_tet_frame());
   }
   const std::string zero = "  0.000000E+00  0.000000E+00  0.000000E+00\n";
-  const std::string rows = "         5" + zero +
-                           "        10  1.000000E-03 -5.000000E-01  0.000000E+00\n"
-                           "        15" + zero +
-                           "        20  2.000000E-03 -1.000000E+00  0.000000E+00\n"
-                           "        25" + zero + "        55" + zero + "        65" + zero;
+  const std::string twenty = "        20  2.000000E-03 -1.000000E+00  0.000000E+00\n";
+  const std::string rows = twenty + "         5" + zero + "        15" + zero + "        25" +
+                           zero + "        35" + zero + "        45" + zero + twenty + "\n";
   EXPECT_NE(slurp(path).find(rows), std::string::npos) << slurp(path);
+  EXPECT_NE(slurp(path).find("\n       -1.000000E+02 -5.000000E+00  6.000000E-20\n"),
+            std::string::npos)
+      << slurp(path);
 }
 
 TEST(DatWriter, UnknownSetThrows) {
