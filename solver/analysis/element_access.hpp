@@ -44,6 +44,7 @@ inline element::ThermoElastic element_material(const model::Model& model,
   m.elastic = mat.elastic;
   m.anisotropic = mat.anisotropic;
   m.hyperelastic = mat.hyperelastic;
+  m.deformation_plasticity = mat.deformation_plasticity;
   const auto& orientation = model.sections[el.section].orientation;
   if (orientation && !mat.anisotropic.empty()) {  // an isotropic material has no frame
     m.frame = [t = orientation->frame](const Vec3& x) { return model::local_frame(t, x); };

@@ -17,7 +17,7 @@ PointElastic ThermoElastic::at(Real T0, Real dT, const Vec3& x) const {
   if (!anisotropic.empty()) {
     const Mat6 local = material::anisotropic_stiffness(anisotropic.at(T));
     p.stiffness = frame ? material::rotate_stiffness(local, frame(x)) : local;
-  } else if (!elastic.empty()) {  // empty for a hyperelastic material
+  } else if (!elastic.empty()) {  // empty for hyperelastic and deformation plasticity
     const auto [young, poisson] = elastic.at(T);
     p.constants.young = young;
     p.constants.poisson = poisson;

@@ -8,6 +8,7 @@
 
 #include "core/types.hpp"
 #include "element/element_type.hpp"
+#include "material/deformation_plasticity.hpp"
 #include "material/hyperelastic.hpp"
 #include "material/temperature_table.hpp"
 
@@ -45,6 +46,8 @@ struct ThermoElastic {
   std::function<Mat3(const Vec3& x)> frame;
   /// Hyperelastic instead (elastic and anisotropic empty): total Lagrangian kernels only.
   std::optional<material::HyperelasticPolynomial> hyperelastic;
+  /// Deformation plasticity instead (elastic and anisotropic empty): total Lagrangian only.
+  std::optional<material::RambergOsgood> deformation_plasticity;
   MatX3 coords;  ///< the element's nodes, where `frame` is evaluated from (with frame only)
   material::TemperatureTable<1> expansion;  ///< secant alpha rows; empty: no thermal strain
   Real expansion_zero = 0;

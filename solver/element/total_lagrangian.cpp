@@ -1,5 +1,7 @@
 #include "element/total_lagrangian.hpp"
 
+#include <Eigen/LU>
+
 #include "element/solid_kernels.hpp"
 
 namespace kontakt::element {
@@ -11,7 +13,19 @@ void nlgeom_element(ElementType type, const MatX3& X, const ThermoElastic& mat, 
                     VecX& f, MatX& K, HourglassModulus* hourglass) {
     if (hourglass) hourglass->value = points.front().material.constants.young;
     out.energy_density.resize(static_cast<Index>(points.size()));
-    auto law = [&](Index k, const Mat3&, const Mat3& Fm) {
+    MatX6 eulerian(static_cast<Index>(points.size()), 6);
+    auto law = [&](Index k, const Mat3& F, const Mat3& Fm) {
+      if (mat.deformation_plasticity) {
+        const material::DeformationPlasticityResponse r =
+            material::deformation_plasticity(*mat.deformation_plasticity, Fm);
+        const Mat3 Fi = F.inverse();  // the printed strain: Eulerian, e = F^-T E F^-1
+        eulerian.row(k) =
+            voigt_from_tensor(0.5 * Fi.transpose() * (F.transpose() * F - Mat3::Identity()) * Fi)
+                .transpose();
+        // No stored energy: the reader refuses ENER and ELSE requests for this material.
+        out.energy_density(k) = 0;
+        return TotalLagrangianResponse{r.stress, r.tangent};
+      }
       if (mat.hyperelastic) {
         const material::HyperelasticResponse r =
             material::polynomial_hyperelastic(*mat.hyperelastic, Fm.transpose() * Fm);
@@ -27,6 +41,8 @@ void nlgeom_element(ElementType type, const MatX3& X, const ThermoElastic& mat, 
     };
     integrate_total_lagrangian(points, values, tangent, law, f, K, out.cauchy,
                                out.green_lagrange);
+    // ccx prints the Eulerian strain its deformation plasticity law works with.
+    if (mat.deformation_plasticity) out.green_lagrange = eulerian;
   };
   run_point_kernel(type, X, mat, u, dT, modes_start, want_tangent, kernel, out.internal_force,
                    out.tangent, out.modes);

@@ -169,6 +169,29 @@ void handle_hyperelastic(const Record& record, DeckState& state) {
   material.hyperelastic = p;
 }
 
+/// E, nu, sigma0, n, alpha[, temperature]: one temperature only.
+void handle_deformation_plasticity(const Record& record, DeckState& state) {
+  check_params(record, {});
+  require_line_count(record, 1, 100000);
+  if (record.lines.size() > 1)
+    fail(record, record.lines[1], "one temperature only: temperature tables are not supported");
+  const DataLine& line = record.lines.front();
+  require_field_count(record, line, 5, 6);
+  material::RambergOsgood law;
+  law.young = real_field(record, line, 0);
+  law.poisson = real_field(record, line, 1);
+  law.yield = real_field(record, line, 2);
+  law.exponent = real_field(record, line, 3);
+  law.alpha = real_field(record, line, 4);
+  if (!(law.young > 0)) fail(record, line, "E (field 1) must be positive");
+  if (!(law.poisson > -1 && law.poisson < 0.5))
+    fail(record, line, "Poisson's ratio (field 2) must lie between -1 and 0.5");
+  if (!(law.yield > 0)) fail(record, line, "the yield stress sigma0 (field 3) must be positive");
+  if (!(law.exponent >= 1)) fail(record, line, "the exponent n (field 4) must be at least 1");
+  if (!(law.alpha >= 0)) fail(record, line, "alpha (field 5) must not be negative");
+  current_material(record, state).deformation_plasticity = law;
+}
+
 void handle_plastic(const Record& record, DeckState& state) {
   check_params(record, {"HARDENING"});
   const std::string hardening = to_upper(name_value(record, "HARDENING").value_or("ISOTROPIC"));

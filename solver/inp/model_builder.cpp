@@ -197,6 +197,27 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
   return surface;
 }
 
+/// *DEFORMATION PLASTICITY stands alone, in NLGEOM steps (the total Lagrangian kernels carry
+/// it), and has no energy to print (ccx's ENER of it is not known here).
+void require_deformation_plasticity_support(const model::Model& model, const model::Material& mat) {
+  if (mat.hyperelastic || !mat.plastic.empty() || !mat.elastic.empty() || !mat.anisotropic.empty())
+    throw InputError(mat.where, "*MATERIAL",
+                     "material " + mat.name + ": *DEFORMATION PLASTICITY stands alone (no *ELASTIC, "
+                                              "*PLASTIC or *HYPERELASTIC)");
+  for (const model::Step& step : model.steps) {
+    if (!step.nlgeom)
+      throw InputError(step.where, "*STEP",
+                       "material " + mat.name + " has *DEFORMATION PLASTICITY: every step needs "
+                                                "NLGEOM");
+    for (const model::PrintRequest& print : step.prints)
+      for (const std::string& variable : print.variables)
+        if (variable == "ENER" || variable == "ELSE")
+          throw InputError(print.where, "*EL PRINT",
+                           variable + " of material " + mat.name +
+                               " (*DEFORMATION PLASTICITY) is not available");
+  }
+}
+
 void assign_sections(DeckState& state) {
   model::Model& model = state.model;
   for (const RawSection& raw : state.sections) {
@@ -221,6 +242,7 @@ void assign_sections(DeckState& state) {
           throw InputError(step.where, "*STEP",
                            "material " + mat.name + " is hyperelastic: every step needs NLGEOM");
     }
+    if (mat.deformation_plasticity) require_deformation_plasticity_support(model, mat);
     if (!mat.anisotropic.empty() && !mat.plastic.empty())
       throw InputError(mat.where, "*MATERIAL",
                        "material " + mat.name + ": *PLASTIC needs an isotropic *ELASTIC "
@@ -251,11 +273,12 @@ void assign_sections(DeckState& state) {
       // C3D8R's hourglass stiffness is scaled by Young's modulus, which an anisotropic
       // material does not have (ccx's choice for it is not known here).
       if (element.type == element::ElementType::C3D8R &&
-          (!mat.anisotropic.empty() || mat.hyperelastic))
+          (!mat.anisotropic.empty() || mat.hyperelastic || mat.deformation_plasticity))
         throw InputError(raw.where, "*SOLID SECTION",
                          "element " + std::to_string(element.id) +
                              " is a C3D8R: its hourglass control needs an isotropic *ELASTIC, "
-                             "and " + mat.name + " is orthotropic, anisotropic or hyperelastic");
+                             "and " + mat.name + " is orthotropic, anisotropic, hyperelastic or "
+                             "deformation plastic");
       element.section = section;
     }
   }

@@ -13,6 +13,7 @@
 #include "core/types.hpp"
 #include "element/element_type.hpp"
 #include "material/hardening_curves.hpp"
+#include "material/deformation_plasticity.hpp"
 #include "material/hyperelastic.hpp"
 #include "material/temperature_table.hpp"
 #include "model/contact.hpp"
@@ -101,6 +102,8 @@ struct Material {
   material::TemperatureTable<21> anisotropic;
   /// *HYPERELASTIC (polynomial family, one temperature): instead of *ELASTIC; NLGEOM only.
   std::optional<material::HyperelasticPolynomial> hyperelastic;
+  /// *DEFORMATION PLASTICITY (one temperature): instead of *ELASTIC; NLGEOM only.
+  std::optional<material::RambergOsgood> deformation_plasticity;
   material::TemperatureTable<1> density;    ///< *DENSITY per temperature
   material::TemperatureTable<1> expansion;  ///< *EXPANSION, isotropic secant coefficient
   Real expansion_zero = 0;                  ///< *EXPANSION, ZERO= reference temperature
@@ -109,7 +112,8 @@ struct Material {
   SourceLoc where;
 
   bool has_elastic() const {
-    return !elastic.empty() || !anisotropic.empty() || hyperelastic.has_value();
+    return !elastic.empty() || !anisotropic.empty() || hyperelastic.has_value() ||
+           deformation_plasticity.has_value();
   }
 };
 

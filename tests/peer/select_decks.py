@@ -29,7 +29,8 @@ the FIRST check a deck breaks is its exclusion reason:
 The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same rule except
 that it requires a *STEP with NLGEOM instead of forbidding it, and admits *PLASTIC with
 isotropic hardening: HARDENING= absent or ISOTROPIC (curves by temperature admitted), and
-*HYPERELASTIC with a potential of HYPERELASTIC_MODELS in a deck without *DLOAD. The linear set keeps *PLASTIC out: ccx
+*HYPERELASTIC with a potential of HYPERELASTIC_MODELS in a deck without *DLOAD, and *DEFORMATION
+PLASTICITY in a deck that prints no ENER or ELSE. The linear set keeps *PLASTIC out: ccx
 switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
 whatever its *STEP says.
 
@@ -304,6 +305,13 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
             reason = plastic_exclusion(params)
             if reason:
                 return reason
+            continue
+        if keyword == "DEFORMATION PLASTICITY" and nlgeom:  # (b), nonlinear set only
+            # Kontakt has no energy of this law to print (ccx's ENER of it is not known).
+            if any(k == "EL PRINT" and {"ENER", "ELSE"} & {_normalise(v) for line in d
+                                                          for v in line.split(",")}
+                   for k, _, d in recs):
+                return "*DEFORMATION PLASTICITY with *EL PRINT of ENER or ELSE"
             continue
         if keyword == "HYPERELASTIC" and nlgeom:  # (b), nonlinear set only
             models = set(params) - {"N"}

@@ -114,6 +114,17 @@ class SelectDecks(unittest.TestCase):
         text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")
         self.assertEqual(exclusion_reason(self.deck(text)), "no *NODE PRINT / *EL PRINT")
 
+    def test_nonlinear_set_admits_deformation_plasticity_without_energy_prints(self):
+        text = GOOD.replace("*ELASTIC\n210000, 0.3\n",
+                            "*DEFORMATION PLASTICITY\n190000., .34, 900., 12., .45\n")
+        text = text.replace("*STEP\n", "*STEP, NLGEOM\n")
+        self.assertIn("DEFORMATION PLASTICITY", text)
+        self.assertIsNone(exclusion_reason(self.deck(text), nlgeom=True))
+        self.assertEqual(exclusion_reason(self.deck(text.replace("S, E\n", "S, ENER\n")),
+                                          nlgeom=True),
+                         "*DEFORMATION PLASTICITY with *EL PRINT of ENER or ELSE")
+        self.assertEqual(exclusion_reason(self.deck(text)), "keyword *DEFORMATION PLASTICITY")
+
     def test_pretension_sections_qualify_without_rf_prints(self):
         cut = "*SURFACE, NAME=CUT\n1, S2\n*PRE-TENSION SECTION, SURFACE=CUT, NODE=9\n0, 0, 1\n*BOUNDARY\n"
         text = GOOD.replace("*BOUNDARY\n", cut, 1)

@@ -120,6 +120,32 @@ std::vector<BadDeck> material_bad_decks() {
        plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3\n*HYPERELASTIC, NEO HOOKE\n1., .1\n"
             "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n"),
        27, "*MATERIAL", "*HYPERELASTIC stands alone"},
+      {"deformation plasticity four constants",
+       plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .34, 900., 12.\n"), 29,
+       "*DEFORMATION PLASTICITY", "expected at least 5 field(s)"},
+      {"deformation plasticity two temperatures",
+       plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .34, 900., 12., .45, 20.\n"
+            "180000., .34, 800., 12., .45, 400.\n"),
+       30, "*DEFORMATION PLASTICITY", "one temperature only"},
+      {"deformation plasticity incompressible",
+       plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .5, 900., 12., .45\n"), 29,
+       "*DEFORMATION PLASTICITY", "Poisson's ratio (field 2) must lie between -1 and 0.5"},
+      {"deformation plasticity exponent below one",
+       plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .3, 900., .5, .45\n"), 29,
+       "*DEFORMATION PLASTICITY", "the exponent n (field 4) must be at least 1"},
+      {"deformation plasticity without NLGEOM",
+       plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .3, 900., 12., .45\n"
+            "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n*STEP\n*STATIC\n*END STEP\n"),
+       31, "*STEP", "has *DEFORMATION PLASTICITY: every step needs NLGEOM"},
+      {"deformation plasticity with elastic",
+       plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3\n*DEFORMATION PLASTICITY\n"
+            "190000., .3, 900., 12., .45\n*SOLID SECTION, ELSET=EALL, MATERIAL=T\n"),
+       27, "*MATERIAL", "*DEFORMATION PLASTICITY stands alone"},
+      {"deformation plasticity energy",
+       plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .3, 900., 12., .45\n"
+            "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n*STEP, NLGEOM\n*STATIC\n"
+            "*EL PRINT, ELSET=EALL\nS, ENER\n*END STEP\n"),
+       33, "*EL PRINT", "ENER of material T (*DEFORMATION PLASTICITY) is not available"},
       {"orientation second line", plus("*ORIENTATION, NAME=O\n1,0,0,0,1,0\n3, 10.\n"), 29,
        "*ORIENTATION", "data line"},
   };
