@@ -15,9 +15,21 @@ inline MatX3 element_coords(const model::Model& model, const model::Element& el)
   return X;
 }
 
+/// The element's section: in `step` when given (*CHANGE SOLID SECTION), else its own. `el`
+/// must be an element of model.mesh.elements.
+inline const model::SolidSection& element_section(const model::Model& model,
+                                                  const model::Element& el,
+                                                  const model::Step* step = nullptr) {
+  const auto e = static_cast<std::size_t>(&el - model.mesh.elements.data());
+  const int section = step && !step->element_sections.empty() ? step->element_sections[e]
+                                                              : el.section;
+  return model.sections[static_cast<std::size_t>(section)];
+}
+
 inline const model::Material& element_material_def(const model::Model& model,
-                                                   const model::Element& el) {
-  return model.materials[model.sections[el.section].material];
+                                                   const model::Element& el,
+                                                   const model::Step* step = nullptr) {
+  return model.materials[element_section(model, el, step).material];
 }
 
 /// Whether some material's elastic constants follow the temperature (a stiffness then changes
@@ -38,14 +50,15 @@ inline VecX element_values(const model::Element& el, const VecX& nodal) {
 /// The element's elastic material with its nodes' initial temperatures, which the
 /// temperature-dependent constants and thermal strain are evaluated from.
 inline element::ThermoElastic element_material(const model::Model& model,
-                                               const model::Element& el) {
-  const auto& mat = element_material_def(model, el);
+                                               const model::Element& el,
+                                               const model::Step* step = nullptr) {
+  const auto& mat = element_material_def(model, el, step);
   element::ThermoElastic m;
   m.elastic = mat.elastic;
   m.anisotropic = mat.anisotropic;
   m.hyperelastic = mat.hyperelastic;
   m.deformation_plasticity = mat.deformation_plasticity;
-  const auto& orientation = model.sections[el.section].orientation;
+  const auto& orientation = element_section(model, el, step).orientation;
   if (orientation && !mat.anisotropic.empty()) {  // an isotropic material has no frame
     m.frame = [t = orientation->frame](const Vec3& x) { return model::local_frame(t, x); };
     m.coords = element_coords(model, el);

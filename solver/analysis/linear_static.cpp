@@ -69,7 +69,11 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     const Real period = step.procedure.period;
     total_time += period;
 
-    if (layout.update(model, step, *solver, threads) || stiffness_follows_temperature)
+    // *CHANGE SOLID SECTION: another material is another stiffness.
+    const bool sections_changed =
+        s > 0 && step.element_sections != model.steps[s - 1].element_sections;
+    if (layout.update(model, step, *solver, threads) || stiffness_follows_temperature ||
+        sections_changed)
       factorised = false;
     const assembly::DofMap& dofs = layout.dofs();
     const assembly::AssemblyPlan& plan = layout.plan();
@@ -86,7 +90,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
           const auto& el = model.mesh.elements[e];
           naming_element(el, [&] {
             const MatX3 X = element_coords(model, el);
-            const auto mat = element_material(model, el);
+            const auto mat = element_material(model, el, &step);
             const VecX dTe = element_values(el, dT);
             element::linear_stiffness(el.type, X, mat, dTe, K);
             if (has_thermal_strain && !mat.expansion.empty())
@@ -123,7 +127,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     const VecX u = dofs.expand(x, g);
     u_previous = u;
 
-    output::Frame frame = small_strain_frame(model, u, dT, threads);
+    output::Frame frame = small_strain_frame(model, step, u, dT, threads);
     frame.T = nodal_temperatures(model, dT);
     frame.step = step_no;
     frame.increment = 1;

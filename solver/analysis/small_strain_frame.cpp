@@ -52,8 +52,8 @@ void average_to_nodes(const model::Model& model, output::Frame& frame) {
     }
 }
 
-output::Frame small_strain_frame(const model::Model& model, const VecX& u, const VecX& dT,
-                                 int threads) {
+output::Frame small_strain_frame(const model::Model& model, const model::Step& step,
+                                 const VecX& u, const VecX& dT, int threads) {
   const auto& elements = model.mesh.elements;
   const int n_el = model.n_elements();
   output::Frame frame = sized_frame(model, u);
@@ -64,7 +64,7 @@ output::Frame small_strain_frame(const model::Model& model, const VecX& u, const
       const auto& el = elements[e];
       const MatX3 X = element_coords(model, el);
       naming_element(el, [&] {
-        element::recover(el.type, X, element_material(model, el), element_displacements(el, u),
+        element::recover(el.type, X, element_material(model, el, &step), element_displacements(el, u),
                          element_values(el, dT), r);
       });
       add_initial_stress(model, el, X, r.stress, r.internal_force);

@@ -7,10 +7,11 @@
 namespace kontakt::analysis {
 
 /// Strains, stresses, energies, volumes and nodal forces (summed element internal forces) for
-/// the full displacement vector u and nodal temperature changes dT, plus nodal averages of the
-/// extrapolated stresses and strains. Elements run in parallel on `threads`.
-output::Frame small_strain_frame(const model::Model& model, const VecX& u, const VecX& dT,
-                                 int threads);
+/// the full displacement vector u and nodal temperature changes dT in `step` (its sections),
+/// plus nodal averages of the extrapolated stresses and strains. Elements run in parallel on
+/// `threads`.
+output::Frame small_strain_frame(const model::Model& model, const model::Step& step,
+                                 const VecX& u, const VecX& dT, int threads);
 
 /// A frame holding displacement u, with its point arrays sized for the model (values unset).
 output::Frame sized_frame(const model::Model& model, const VecX& u);

@@ -47,14 +47,15 @@ void add_pressure(const model::Model& model, const model::PressureLoad& load, co
 }
 
 /// Adds one body load's nodal forces under the acceleration `b` with the nodes displaced by `u`.
-void add_body_load(const model::Model& model, const model::BodyLoad& load,
-                   const element::BodyAcceleration& b, const VecX& u, VecX& f) {
+void add_body_load(const model::Model& model, const model::Step& step,
+                   const model::BodyLoad& load, const element::BodyAcceleration& b, const VecX& u,
+                   VecX& f) {
   for (int e : load.elements) {
     const auto& el = model.mesh.elements[static_cast<std::size_t>(e)];
     VecX fe;
     naming_element(el, [&] {
       element::body_load(el.type, element_coords(model, el), element_displacements(el, u),
-                         element_material_def(model, el).density.rows.front()[0], b, fe);
+                         element_material_def(model, el, &step).density.rows.front()[0], b, fe);
     });
     for (std::size_t a = 0; a < el.nodes.size(); ++a)
       f.segment<3>(3 * el.nodes[a]) += fe.segment<3>(3 * static_cast<Index>(a));
@@ -85,7 +86,8 @@ VecX body_forces(const model::Model& model, const model::Step& step, Real step_t
                  Real total_time, Real ramp, const VecX& u) {
   VecX f = VecX::Zero(3 * model.n_nodes());
   for (const auto& load : step.body_loads)
-    add_body_load(model, load, body_acceleration(model, load, step_time, total_time, ramp), u, f);
+    add_body_load(model, step, load, body_acceleration(model, load, step_time, total_time, ramp),
+                  u, f);
   return f;
 }
 
@@ -103,7 +105,7 @@ DistributedLoadShapes distributed_load_shapes(const model::Model& model, const m
   for (const auto& load : step.body_loads) {
     element::BodyAcceleration unit = body_acceleration(model, load, 0, 0, 1);
     unit.magnitude = load.value;
-    add_body_load(model, load, unit, at_rest, shape_of(load.amplitude));
+    add_body_load(model, step, load, unit, at_rest, shape_of(load.amplitude));
   }
   return shapes;
 }

@@ -101,6 +101,8 @@ struct ActiveLoads {
   model::ContactControls contact_controls;  ///< likewise
   /// *CHANGE FRICTION: interaction index -> the friction that replaces the model's one.
   std::map<int, model::Friction> friction_changes;
+  /// *CHANGE SOLID SECTION cards so far, in deck order (ELSET, MATERIAL and the card's place).
+  std::vector<RawSection> section_changes;
   /// *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE: indices into DeckState::contact_pairs.
   std::set<int> removed_contact_pairs;
   /// *CHANGE SURFACE BEHAVIOR: interaction index -> the behavior that replaces the model's one
@@ -138,6 +140,8 @@ struct DeckState {
   /// Per finished step: ActiveLoads::friction_changes at its end (combined with the model's
   /// frictions once those are resolved, into Step::interaction_friction).
   std::vector<std::map<int, model::Friction>> step_friction_changes;
+  /// Per finished step: ActiveLoads::section_changes at its end.
+  std::vector<std::vector<RawSection>> step_section_changes;
   /// Per finished step: ActiveLoads::behavior_changes at its end, with the card of each.
   std::vector<std::map<int, model::SurfaceBehavior>> step_behavior_changes;
   /// The *SURFACE BEHAVIOR card of each change (interaction index -> card), for messages.

@@ -50,6 +50,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"CONTROLS", S, None, handle_controls},
     {"CHANGEFRICTION", S, Inter, handle_change_friction},
     {"MODELCHANGE", S, None, handle_model_change},
+    {"CHANGESOLIDSECTION", S, None, handle_change_solid_section},
     {"CHANGESURFACEBEHAVIOR", S, Inter, handle_change_surface_behavior},
     {"ENDSTEP", S, None, handle_end_step},
     {"CLOAD", S, None, handle_cload},

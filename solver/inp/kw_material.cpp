@@ -280,6 +280,19 @@ void handle_solid_section(const Record& record, DeckState& state) {
       RawSection{elset, material, record.where, thickness, offset, orientation});
 }
 
+void handle_change_solid_section(const Record& record, DeckState& state) {
+  check_params(record, {"ELSET", "MATERIAL", "ORIENTATION"});
+  if (has_param(record, "ORIENTATION"))
+    fail(record, "ORIENTATION= is not supported (the change is between isotropic materials)");
+  if (!record.lines.empty())
+    fail(record, record.lines.front(), "no data line: ccx does not allow the thickness to change");
+  RawSection change;
+  change.elset = remove_blanks(to_upper(required_value(record, "ELSET")));
+  change.material = remove_blanks(to_upper(required_value(record, "MATERIAL")));
+  change.where = record.where;
+  state.active.section_changes.push_back(std::move(change));
+}
+
 void handle_orientation(const Record& record, DeckState& state) {
   check_params(record, {"NAME", "SYSTEM", "DEFINITION"});
   const std::string name = remove_blanks(to_upper(required_value(record, "NAME")));

@@ -1,6 +1,7 @@
 #include "inp/model_builder.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "inp/contact_builder.hpp"
 #include "inp/element_names.hpp"
@@ -381,6 +382,56 @@ void require_initial_stress_support(DeckState& state) {
   }
 }
 
+/// Step::element_sections from the *CHANGE SOLID SECTION cards in force in each step. Linear
+/// analyses of isotropic elastic materials only: the nonlinear drivers read the elements' own
+/// sections, and a plastic or hyperelastic state has no meaning under another law.
+void resolve_section_changes(DeckState& state) {
+  model::Model& model = state.model;
+  std::map<std::pair<int, int>, int> changed_section;  // (section, material) -> section
+  for (std::size_t s = 0; s < model.steps.size(); ++s) {
+    const std::vector<RawSection>& changes = state.step_section_changes[s];
+    if (changes.empty()) continue;
+    const auto refuse = [&](const RawSection& change, const std::string& why) {
+      throw InputError(change.where, "*CHANGE SOLID SECTION", why);
+    };
+    const RawSection& first = changes.front();
+    for (const model::Step& step : model.steps)
+      if (step.nlgeom) refuse(first, "not supported with NLGEOM steps (linear analyses only)");
+    if (!model.contact_pairs.empty() || !model.ties.empty())
+      refuse(first, "not supported with contact or ties (linear analyses only)");
+    for (const model::Material& mat : model.materials)
+      if (!mat.plastic.empty())
+        refuse(first, "not supported in a deck with *PLASTIC (linear analyses only)");
+    std::vector<int>& sections = model.steps[s].element_sections;
+    for (const model::Element& el : model.mesh.elements) sections.push_back(el.section);
+    for (const RawSection& change : changes) {
+      const auto material = state.material_index.find(change.material);
+      if (material == state.material_index.end())
+        refuse(change, "material " + change.material + " is not defined");
+      const model::Material& mat = model.materials[static_cast<std::size_t>(material->second)];
+      if (mat.elastic.empty())
+        refuse(change, "material " + change.material + " needs an isotropic *ELASTIC");
+      const auto elset = model.element_sets.find(change.elset);
+      if (elset == model.element_sets.end())
+        refuse(change, "element set " + change.elset + " is not defined");
+      for (int e : elset->second.elements) {
+        int& section = sections[static_cast<std::size_t>(e)];
+        if (section < 0) continue;  // no section before: the deck's own check reports it
+        const model::SolidSection old = model.sections[static_cast<std::size_t>(section)];
+        if (old.orientation || model.materials[static_cast<std::size_t>(old.material)].elastic.empty())
+          refuse(change, "element " + std::to_string(model.mesh.elements[static_cast<std::size_t>(e)].id) +
+                             " is not of an isotropic *ELASTIC material without orientation");
+        const auto key = std::make_pair(section, material->second);
+        auto [it, fresh] = changed_section.try_emplace(key, static_cast<int>(model.sections.size()));
+        if (fresh)
+          model.sections.push_back(model::SolidSection{change.elset, material->second, change.where,
+                                                       old.thickness, old.offset, std::nullopt});
+        section = it->second;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 model::Model finish_model(DeckState& state) {
@@ -404,6 +455,7 @@ model::Model finish_model(DeckState& state) {
   require_initial_stress_support(state);
   resolve_contact(state);
   resolve_ties(state);
+  resolve_section_changes(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());
     for (const auto& [node, value] : state.initial_temperatures) {

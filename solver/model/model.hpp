@@ -253,6 +253,9 @@ struct Step {
   /// Per interaction (Model::interactions order): the friction in force in this step, i.e. the
   /// interaction's *FRICTION as changed by *CHANGE FRICTION in this or an earlier step.
   std::vector<std::optional<Friction>> interaction_friction;
+  /// *CHANGE SOLID SECTION in this or an earlier step: the section (Model::sections index) of
+  /// every element in this step; empty: each element's own Element::section.
+  std::vector<int> element_sections;
   /// Per *CONTACT PAIR of the deck (Model::contact_pairs order): 0 where *MODEL CHANGE, TYPE=
   /// CONTACT PAIR, REMOVE took it out in this or an earlier step (and no ADD brought it back).
   /// Pairs beyond the vector (TIED pairs of *TIE) are active.

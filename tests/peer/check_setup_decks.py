@@ -21,6 +21,9 @@ x = 0, pushed down at its free end under NLGEOM):
                overlapping sets (duplicates kept, counted twice in TOTALS=), a GENERATE range
                naming labels without a node (zero rows up to the largest label, none beyond),
                element sets in deck order.
+  change_solid_section  linear steps: the bar under its own weight and a tip load, the
+               elements of its outer half given a softer and denser material in step 2
+               (*CHANGE SOLID SECTION), all four the original one again in step 3.
   contact_pair_change  not the bar: a 2 x 2 block pressed onto a 3 x 3 one (C3D8, rollers,
                surface-to-surface), its contact pair taken out by *MODEL CHANGE, REMOVE (the
                top block pushed on through the lower one, then lifted off) and put back by ADD
@@ -161,6 +164,27 @@ def set_print_order_deck():
     return "\n".join(lines) + "\n"
 
 
+def change_solid_section_deck():
+    lines = model_lines()
+    elastic = lines.index("210000., 0.3")
+    lines[elastic + 1:elastic + 1] = ["*DENSITY", "7.8e-9"]
+    lines += ["*MATERIAL, NAME=SOFT", "*ELASTIC", "70000., 0.33", "*DENSITY", "2.7e-9",
+              "*ELSET, ELSET=OUTER", "3, 4",
+              "*STEP", "*STATIC",
+              "*CLOAD", "TIP, 2, -500.",
+              "*DLOAD", "EALL, GRAV, 9810., 0., -1., 0.",
+              "*NODE PRINT, NSET=NALL", "U, RF",
+              "*EL PRINT, ELSET=EALL", "S, E",
+              "*END STEP",
+              "*STEP", "*STATIC",
+              "*CHANGE SOLID SECTION, ELSET=OUTER, MATERIAL=SOFT",
+              "*END STEP",
+              "*STEP", "*STATIC",
+              "*CHANGE SOLID SECTION, ELSET=EALL, MATERIAL=EL",
+              "*END STEP"]
+    return "\n".join(lines) + "\n"
+
+
 def contact_pair_change_deck():
     # Upper block (nodes and elements from 1001) on the lower one; rollers on the x = 0 and
     # y = 0 faces and under the lower block, the upper top moved in z step by step.
@@ -204,6 +228,7 @@ def contact_pair_change_deck():
 
 DECKS = {
     "set_print_order": set_print_order_deck,
+    "change_solid_section": change_solid_section_deck,
     "contact_pair_change": contact_pair_change_deck,
     "time_points": time_points_deck,
     "network_pressure": network_pressure_deck,

@@ -146,6 +146,38 @@ std::vector<BadDeck> material_bad_decks() {
             "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n*STEP, NLGEOM\n*STATIC\n"
             "*EL PRINT, ELSET=EALL\nS, ENER\n*END STEP\n"),
        33, "*EL PRINT", "ENER of material T (*DEFORMATION PLASTICITY) is not available"},
+      // *CHANGE SOLID SECTION: the cubes' material STEEL (lines 22-25), SOFT appended (27-29),
+      // the step from line 30.
+      {"change solid section orientation",
+       plus("*MATERIAL, NAME=SOFT\n*ELASTIC\n7e4, .3\n*STEP\n*STATIC\n*CHANGE SOLID SECTION, "
+            "ELSET=EALL, MATERIAL=SOFT, ORIENTATION=O\n*END STEP\n"),
+       32, "*CHANGE SOLID SECTION", "ORIENTATION= is not supported"},
+      {"change solid section thickness",
+       plus("*MATERIAL, NAME=SOFT\n*ELASTIC\n7e4, .3\n*STEP\n*STATIC\n*CHANGE SOLID SECTION, "
+            "ELSET=EALL, MATERIAL=SOFT\n2.\n*END STEP\n"),
+       33, "*CHANGE SOLID SECTION", "ccx does not allow the thickness to change"},
+      {"change solid section unknown material",
+       plus("*STEP\n*STATIC\n*CHANGE SOLID SECTION, ELSET=EALL, MATERIAL=NOPE\n*END STEP\n"),
+       29, "*CHANGE SOLID SECTION", "material NOPE is not defined"},
+      {"change solid section unknown set",
+       plus("*MATERIAL, NAME=SOFT\n*ELASTIC\n7e4, .3\n*STEP\n*STATIC\n*CHANGE SOLID SECTION, "
+            "ELSET=NOPE, MATERIAL=SOFT\n*END STEP\n"),
+       32, "*CHANGE SOLID SECTION", "element set NOPE is not defined"},
+      {"change solid section to a hyperelastic material",
+       plus("*MATERIAL, NAME=RUBBER\n*HYPERELASTIC, NEO HOOKE\n1., .1\n*STEP\n*STATIC\n"
+            "*CHANGE SOLID SECTION, ELSET=EALL, MATERIAL=RUBBER\n*END STEP\n"),
+       32, "*CHANGE SOLID SECTION", "material RUBBER needs an isotropic *ELASTIC"},
+      {"change solid section under NLGEOM",
+       plus("*MATERIAL, NAME=SOFT\n*ELASTIC\n7e4, .3\n*STEP, NLGEOM\n*STATIC\n"
+            "*CHANGE SOLID SECTION, ELSET=EALL, MATERIAL=SOFT\n*END STEP\n"),
+       32, "*CHANGE SOLID SECTION", "not supported with NLGEOM steps"},
+      {"change solid section with plasticity",
+       plus("*MATERIAL, NAME=SOFT\n*ELASTIC\n7e4, .3\n*PLASTIC\n100., 0.\n*STEP\n*STATIC\n"
+            "*CHANGE SOLID SECTION, ELSET=EALL, MATERIAL=SOFT\n*END STEP\n"),
+       34, "*CHANGE SOLID SECTION", "not supported in a deck with *PLASTIC"},
+      {"change solid section in the model",
+       plus("*CHANGE SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n"), 27, "*CHANGE SOLID SECTION",
+       "only allowed between *STEP and *END STEP"},
       {"orientation second line", plus("*ORIENTATION, NAME=O\n1,0,0,0,1,0\n3, 10.\n"), 29,
        "*ORIENTATION", "data line"},
   };
