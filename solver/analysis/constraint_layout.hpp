@@ -21,6 +21,9 @@ class ConstraintLayout {
   /// ones, rebuilds the pattern and reruns the symbolic analysis, and returns true.
   bool set_contact_groups(const std::vector<std::vector<int>>& groups,
                           linsolve::LinearSolver& solver, int threads);
+  /// Solves the nonlinear constraints for their dependent dofs in `u` and linearises them
+  /// there (DofMap::relinearise); the pattern stays.
+  void relinearise(VecX& u) { dofs_->relinearise(u); }
   const assembly::DofMap& dofs() const { return *dofs_; }
   const assembly::AssemblyPlan& plan() const { return *plan_; }
 

@@ -128,6 +128,7 @@ void run_linear_static(const model::Model& model, const RunOptions& options, Fra
     u_previous = u;
 
     output::Frame frame = small_strain_frame(model, step, u, dT, threads);
+    dofs.add_constraint_forces(frame.RF);
     frame.T = nodal_temperatures(model, dT);
     frame.step = step_no;
     frame.increment = 1;

@@ -223,6 +223,7 @@ class NonlinearStatic {
     for (int k = 0; k < dofs.n_prescribed(); ++k)
       a.g_old[k] = dofs.unknown_value(u_predicted, dofs.prescribed_dof(k));
     a.u = dofs.expand(a.x, a.g_old);
+    if (sc.step->nlgeom) layout_.relinearise(a.u);
     if (!contact_.empty()) {
       timed(times_.contact_search, [&] {
         contact_.begin_increment(u_,  // pairings at the converged state, not the prediction
@@ -292,6 +293,7 @@ class NonlinearStatic {
         contact_.set_stabilisation(stabilisation_.factor());
         a.x = x_start;
         a.u = u_start;
+        if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
         at_start = true;
         level_it = 0;
         continue;
@@ -355,6 +357,7 @@ class NonlinearStatic {
                               std::to_string(stabilisation_.factor()) + " times the penalty");
           a.x = x_saved;
           a.u = u_saved;
+          if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
           contact_.set_stabilisation(stabilisation_.factor());
           level_it = 0;
           continue;
@@ -411,6 +414,7 @@ class NonlinearStatic {
     const VecX x_old = a.x, rhs_old = a.ev.system.rhs, no_step = VecX::Zero(dofs.n_prescribed());
     a.x = x_old + dx;
     VecX u_new = dofs.expand(a.x, a.g);
+    if (sc.step->nlgeom) layout_.relinearise(u_new);
     a.ev = evaluate(sc, a, u_new, no_step);
     if (contact_.wants_line_search(it)) {
       // The root of the residual's projection on dx, from its values at both ends.
@@ -421,6 +425,7 @@ class NonlinearStatic {
       if (std::abs(eta - 1) > 1e-3) {
         a.x = x_old + eta * dx;
         u_new = dofs.expand(a.x, a.g);
+        if (sc.step->nlgeom) layout_.relinearise(u_new);
         a.ev = evaluate(sc, a, u_new, no_step);
       }
     }
@@ -474,6 +479,7 @@ class NonlinearStatic {
     increments_->converged(it);
 
     output::Frame frame = converged_frame(model_, u_, a.ev);
+    layout_.dofs().add_constraint_forces(frame.RF);
     frame.T = nodal_temperatures(model_, a.dT);
     frame.step = sc.number;
     frame.increment = increment_no;

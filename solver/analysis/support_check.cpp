@@ -34,6 +34,8 @@ std::vector<UnsupportedBody> unsupported_bodies(const model::Model& model,
     }
   for (const auto& eq : model.equations)
     for (const auto& term : eq.terms) bodies.join(eq.terms.front().node, term.node);
+  for (const auto& c : model.nonlinear_constraints)
+    for (int node : c.nodes) bodies.join(c.nodes.front(), node);
   // Contact can hold a body against another: the two sides of a pair count as one body.
   if (contact_holds)
     for (const auto& pair : model.contact_pairs) {

@@ -1,7 +1,10 @@
 #include "assembly/dof_map.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+
+#include "assembly/nonlinear_constraint.hpp"
 
 namespace kontakt::assembly {
 
@@ -37,7 +40,8 @@ std::vector<DofTerm> merged(std::vector<DofTerm> terms) {
 
 }  // namespace
 
-DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries) {
+DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries)
+    : model_(&model) {
   const int n = 3 * model.n_nodes();
   frames_ = model.local_frames;
   const std::vector<char> attached = attached_dofs(model);
@@ -74,6 +78,36 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     dependent_of[d] = &eq;
     kind[d] = Kind::Dependent;
   }
+  // Nonlinear constraints: dependent dofs as an equation's; their other dofs are unknowns.
+  std::map<int, int> nonlinear_of;  // dependent dof -> constraint
+  const auto& constraints = model.nonlinear_constraints;
+  for (int i = 0; i < static_cast<int>(constraints.size()); ++i) {
+    const model::NonlinearConstraint& c = constraints[static_cast<std::size_t>(i)];
+    const std::vector<ConstraintDof> cdofs = constraint_dofs(c);
+    for (const ConstraintDof& cd : cdofs)
+      if (frames_.contains(cd.node))
+        throw InputError(c.where, c.keyword,
+                         "node " + std::to_string(model.mesh.node_ids[cd.node]) +
+                             " has a *TRANSFORM; nonlinear constraints on transformed nodes are "
+                             "not supported");
+    const int d = 3 * cdofs.front().node + cdofs.front().component;
+    if (kind[d] == Kind::Prescribed)
+      throw InputError(c.where, c.keyword,
+                       "the dependent dof of this constraint (" + describe(model, d) +
+                           ") is also prescribed by *BOUNDARY in this step");
+    if (kind[d] == Kind::Dependent)
+      throw InputError(c.where, c.keyword,
+                       "dof " + describe(model, d) +
+                           " is the dependent dof of this and of another constraint (a node in "
+                           "two rigid bodies, or in a rigid body and an *MPC or *EQUATION)");
+    kind[d] = Kind::Dependent;
+    nonlinear_of[d] = i;
+  }
+  for (const auto& c : constraints)
+    for (const ConstraintDof& cd : constraint_dofs(c))
+      if (kind[3 * cd.node + cd.component] == Kind::Inactive)
+        kind[3 * cd.node + cd.component] = Kind::Free;  // a reference or rotation node
+
   for (const auto& eq : model.equations)  // ccx's *TIE ties global components
     for (const auto& term : eq.terms)
       if (eq.keyword != "*EQUATION" && frames_.contains(term.node))
@@ -112,12 +146,48 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
       case Kind::Free: out.push_back({eq_of[d], 1.0, false}); break;
       case Kind::Prescribed: out.push_back({prescribed_slot_[d], 1.0, true}); break;
       case Kind::Dependent: {
+        if (const auto nl = nonlinear_of.find(d); nl != nonlinear_of.end()) {
+          // One term per other dof, in constraint_dofs order, unmerged: relinearise() keeps
+          // their coefficients current.
+          const model::NonlinearConstraint& c = constraints[static_cast<std::size_t>(nl->second)];
+          const std::vector<ConstraintDof> cdofs = constraint_dofs(c);
+          VecX gradient;
+          constraint_value(c, model.mesh.coords, VecX::Zero(n), &gradient);
+          if (gradient[0] == 0)
+            throw InputError(c.where, c.keyword,
+                             "the constraint does not depend on its dependent dof (" +
+                                 describe(model, d) + ") in the undeformed configuration");
+          NonlinearRow row{.dof = d, .constraint = nl->second, .other_dofs = {}, .elementless = {},
+                           .constant = 0};
+          for (std::size_t k = 1; k < cdofs.size(); ++k) {
+            const int other = 3 * cdofs[k].node + cdofs[k].component;
+            if (kind[other] == Kind::Dependent)
+              throw InputError(c.where, c.keyword,
+                               describe(model, other) +
+                                   " of this constraint is the dependent dof of another "
+                                   "constraint or equation; nonlinear constraints cannot be "
+                                   "chained");
+            const DofTerm t = self(self, other).front();
+            out.push_back({t.index, -gradient[static_cast<Index>(k)] / gradient[0], t.is_prescribed});
+            row.other_dofs.push_back(other);
+            row.elementless.push_back(!attached[other]);
+          }
+          nonlinear_rows_.push_back(std::move(row));
+          expr[d] = std::move(out);
+          state[d] = 2;
+          return expr[d];
+        }
         const auto& eq = *dependent_of.at(d);
         const Real lead = eq.terms.front().coef;
         if (lead == 0)
           throw InputError(eq.where, eq.keyword, "the first coefficient must not be zero");
         for (std::size_t k = 1; k < eq.terms.size(); ++k) {
           const int other = 3 * eq.terms[k].node + eq.terms[k].dof;
+          if (nonlinear_of.contains(other))
+            throw InputError(eq.where, eq.keyword,
+                             describe(model, other) +
+                                 " is the dependent dof of a nonlinear constraint (*RIGID BODY "
+                                 "or *MPC); it cannot be a term of an equation");
           for (const DofTerm& t : self(self, other))
             out.push_back({t.index, -eq.terms[k].coef / lead * t.coef, t.is_prescribed});
         }
@@ -149,6 +219,38 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     const std::vector<DofTerm> e = row(d);
     terms_.insert(terms_.end(), e.begin(), e.end());
     start_[d + 1] = static_cast<int>(terms_.size());
+  }
+  nonlinear_dof_.assign(n, 0);
+  for (const NonlinearRow& r : nonlinear_rows_) nonlinear_dof_[r.dof] = 1;
+}
+
+void DofMap::relinearise(VecX& u) {
+  const MatX3& coords = model_->mesh.coords;
+  VecX gradient;
+  for (NonlinearRow& row : nonlinear_rows_) {
+    const model::NonlinearConstraint& c =
+        model_->nonlinear_constraints[static_cast<std::size_t>(row.constraint)];
+    const int d = row.dof;
+    // Newton on the dependent dof (g is linear in it for the kinds there are: one step).
+    for (int it = 0;; ++it) {
+      const Real g = constraint_value(c, coords, u, &gradient);
+      const Real step = g / gradient[0];
+      if (!std::isfinite(step) || it == 20)
+        throw SolverError(c.keyword + " at " + c.where.file + ":" + std::to_string(c.where.line) +
+                          ": the constraint cannot be solved for " + describe(*model_, d) +
+                          " in the current configuration (it no longer depends on that dof)");
+      u[d] -= step;
+      if (std::abs(step) <= 1e-14 * (1 + std::abs(coords(d / 3, d % 3)) + std::abs(u[d]))) break;
+    }
+    constraint_value(c, coords, u, &gradient);
+    Real constant = u[d];
+    DofTerm* terms = terms_.data() + start_[d];
+    for (std::size_t k = 0; k < row.other_dofs.size(); ++k) {
+      const Real coef = -gradient[static_cast<Index>(k + 1)] / gradient[0];
+      terms[k].coef = coef;
+      constant -= coef * u[row.other_dofs[k]];
+    }
+    row.constant = constant;
   }
 }
 
@@ -183,16 +285,29 @@ VecX DofMap::expand(const VecX& x, const VecX& prescribed_values) const {
       v += t->coef * (t->is_prescribed ? prescribed_values[t->index] : x[t->index]);
     u[d] = v;
   }
+  for (const NonlinearRow& row : nonlinear_rows_) u[row.dof] += row.constant;
   return u;
+}
+
+void DofMap::add_constraint_forces(MatX3& nodal_forces) const {
+  for (const NonlinearRow& row : nonlinear_rows_) {
+    const Real f = nodal_forces(row.dof / 3, row.dof % 3);
+    const DofTerm* terms = terms_.data() + start_[row.dof];
+    for (std::size_t k = 0; k < row.other_dofs.size(); ++k)
+      if (row.elementless[k])
+        nodal_forces(row.other_dofs[k] / 3, row.other_dofs[k] % 3) += terms[k].coef * f;
+  }
 }
 
 bool DofMap::same_structure(const DofMap& other) const {
   if (start_ != other.start_ || terms_.size() != other.terms_.size()) return false;
-  for (std::size_t k = 0; k < terms_.size(); ++k)
-    if (terms_[k].index != other.terms_[k].index ||
-        terms_[k].is_prescribed != other.terms_[k].is_prescribed ||
-        terms_[k].coef != other.terms_[k].coef)
-      return false;
+  if (nonlinear_dof_ != other.nonlinear_dof_) return false;
+  for (int d = 0; d < n_dofs(); ++d)
+    for (int k = start_[d]; k < start_[d + 1]; ++k)
+      if (terms_[k].index != other.terms_[k].index ||
+          terms_[k].is_prescribed != other.terms_[k].is_prescribed ||
+          (!nonlinear_dof_[d] && terms_[k].coef != other.terms_[k].coef))
+        return false;
   return true;
 }
 

@@ -4,6 +4,8 @@
 //   free        u_d = x[eq]                                 (an unknown of the reduced system)
 //   prescribed  u_d = value of a *BOUNDARY                   (eliminated, reaction reported)
 //   dependent   u_d = sum_k c_k * (free or prescribed dof)   (*EQUATION, first term dependent)
+//               + h_d                                        (h_d, c_k of a nonlinear constraint
+//                                                             are its linearisation: relinearise)
 //   inactive    u_d = 0                                      (node not attached to any element)
 // so u = T x + g, with T and g stored row by row. Element matrices are reduced as T^T K T.
 //
@@ -59,10 +61,24 @@ class DofMap {
 
   /// Full displacement vector u = T x + g for reduced solution x and prescribed values.
   VecX expand(const VecX& x, const VecX& prescribed_values) const;
+
+  /// Solves every nonlinear constraint (Model::nonlinear_constraints) for its dependent dof in
+  /// `u`, the other dofs held, and linearises it there: afterwards expand() of the unknowns
+  /// of `u` gives `u` back, and T holds the constraints' derivatives at it. Throws SolverError
+  /// when a constraint cannot be solved for its dependent dof.
+  void relinearise(VecX& u);
+  bool has_nonlinear_constraints() const { return !nonlinear_rows_.empty(); }
+  /// Adds the nodal force at each nonlinear constraint's dependent dof, through the
+  /// constraint's current linearisation, to those of its other dofs whose node belongs to no
+  /// element, as ccx reports them: the reference and rotation nodes of a rigid body carry the
+  /// force and moment on the body, element nodes their element forces (measured: ccx 2.20's
+  /// beamrb, beamrb2, beammrlin).
+  void add_constraint_forces(MatX3& nodal_forces) const;
   /// Value of u_d contributed by the prescribed values alone (g_d).
   Real offset(int dof, const VecX& prescribed_values) const;
 
   /// Signature of the constraint structure: equal signatures give equal sparsity patterns.
+  /// same_structure() compares the coefficients too, but not those of nonlinear constraints.
   const std::vector<int>& structure() const { return start_; }
   bool same_structure(const DofMap& other) const;
 
@@ -72,6 +88,18 @@ class DofMap {
   std::string describe_unknown(const model::Model& model, int unknown) const;
 
  private:
+  /// The row of a nonlinear constraint's dependent dof: its terms are the constraint's other
+  /// dofs (constraint_dofs order), each a free or prescribed unknown of its own.
+  struct NonlinearRow {
+    int dof = 0;
+    int constraint = 0;               ///< into Model::nonlinear_constraints
+    std::vector<int> other_dofs;      ///< global dofs of the terms
+    std::vector<char> elementless;    ///< per other dof: its node belongs to no element
+    Real constant = 0;                ///< h_d
+  };
+  const model::Model* model_ = nullptr;
+  std::vector<NonlinearRow> nonlinear_rows_;
+  std::vector<char> nonlinear_dof_;   ///< per dof: the dependent dof of a nonlinear constraint
   std::vector<int> start_;
   std::vector<DofTerm> terms_;
   std::vector<int> prescribed_slot_;

@@ -35,6 +35,13 @@ struct RawFace {
   int face = 0;
   int line_id = 0;
 };
+/// *RIGID BODY as read: its nodes are resolved once the elements are (ELSET=).
+struct RawRigidBody {
+  std::optional<std::string> nset, elset;  ///< exactly one is set
+  int ref = 0, rot = 0;                    ///< internal node indices
+  SourceLoc where;
+};
+
 struct RawSurface {
   model::Surface::Kind kind = model::Surface::Kind::ElementFaces;
   std::vector<RawFace> faces;
@@ -130,6 +137,7 @@ struct DeckState {
   std::map<std::string, RawSet> node_sets, element_sets;
   std::map<std::string, RawSurface> surfaces;
   std::vector<RawSection> sections;
+  std::vector<RawRigidBody> rigid_bodies;
   std::map<std::string, int> material_index;
   std::map<std::string, model::Orientation> orientations;  ///< *ORIENTATION by name
   std::map<std::string, int> amplitude_index;
@@ -160,6 +168,7 @@ struct DeckState {
   std::string open_change;  ///< in a step: which of the two *CHANGE cards names it
   std::optional<StepProgress> open_step;
   bool any_step_seen = false;
+  bool nonlinear_mpc = false;  ///< an *MPC was read: every step runs with NLGEOM (ccx)
   ActiveLoads active;
 
   int intern(const SourceLoc& where) {

@@ -42,6 +42,8 @@ constexpr KeywordSpec kKeywords[] = {
     {"ORIENTATION", M, None, handle_orientation},
     {"INITIALCONDITIONS", M, None, handle_initial_conditions},
     {"EQUATION", M, None, handle_equation},
+    {"RIGIDBODY", M, None, handle_rigid_body},
+    {"MPC", M, None, handle_mpc},
     {"AMPLITUDE", A, None, handle_amplitude},
     {"TIMEPOINTS", M, None, handle_time_points},
     {"BOUNDARY", A, None, handle_boundary},

@@ -29,6 +29,10 @@ void handle_step(const Record& record, DeckState& state) {
     if (value != "YES" && value != "NO") fail(record, "NLGEOM=" + value + ": expected YES or NO");
     progress.step.nlgeom = value == "YES";
   }
+  if (state.nonlinear_mpc && !progress.step.nlgeom) {  // ccx: *MPC triggers NLGEOM
+    progress.step.nlgeom = true;
+    state.warn(record.where, "*STEP", "NLGEOM switched on: the deck has an *MPC (as in ccx)");
+  }
   if (const std::optional<int> inc = int_param(record, "INC")) {
     if (*inc <= 0) fail(record, "INC= must be positive");
     progress.step.max_increments = *inc;

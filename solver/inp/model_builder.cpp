@@ -455,6 +455,7 @@ model::Model finish_model(DeckState& state) {
   require_initial_stress_support(state);
   resolve_contact(state);
   resolve_ties(state);
+  resolve_rigid_bodies(state);
   resolve_section_changes(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());

@@ -39,6 +39,10 @@ std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
 /// copy of the amplitude moved later in time by the delay.
 int amplitude_param(DeckState& state, const Record& record);
 
+/// Turns the *RIGID BODY cards into Model::nonlinear_constraints, once the elements are
+/// resolved (kw_nonlinear_constraint.cpp).
+void resolve_rigid_bodies(DeckState& state);
+
 /// Checks cross references and produces the Model.
 model::Model finish_model(DeckState& state);
 

@@ -155,6 +155,26 @@ struct Equation {
   std::string keyword = "*EQUATION";  ///< the card it comes from (*EQUATION, *TIE), for messages
 };
 
+/// A nonlinear multiple point constraint g(u) = 0 over the dofs of a few nodes, solved for
+/// one dependent dof (*RIGID BODY, *MPC PLANE / STRAIGHT / MEANROT;
+/// assembly/nonlinear_constraint).
+struct NonlinearConstraint {
+  enum class Kind {
+    Rigid,     ///< nodes {p, ref, rot}: x_p = x_ref + R(u_rot) (X_p - X_ref) in `component`
+    Plane,     ///< nodes {p, a, b, c}: p stays in the plane through a, b and c
+    Straight,  ///< nodes {p, a, b}: p stays on the line through a and b (two constraints)
+    /// nodes {n_1 .. n_N, e}: the mean rotation of n_1 .. n_N about the axis through their
+    /// centre along e's coordinates is e's first dof (ccx's MEANROT, manual section 8.7.1)
+    MeanRotation,
+  };
+  Kind kind = Kind::Rigid;
+  std::vector<int> nodes;  ///< internal indices, in the roles of `kind`
+  int component = 0;       ///< the dependent dof: this component of nodes[0]
+  int pivot = 0;           ///< Straight: the component of the line's direction g is scaled by
+  SourceLoc where;
+  std::string keyword;     ///< *RIGID BODY or *MPC, for messages
+};
+
 /// *PRE-TENSION SECTION, SURFACE=: a bolt cut along an element-face surface, opened or loaded
 /// through the first dof of a reference node (model/pretension).
 struct PretensionSection {
@@ -277,6 +297,9 @@ struct Model {
   std::vector<Amplitude> amplitudes;
   std::vector<TimePoints> time_points;
   std::vector<Equation> equations;
+  /// Re-linearised at every iteration of an NLGEOM step, linear (at the undeformed state)
+  /// otherwise.
+  std::vector<NonlinearConstraint> nonlinear_constraints;
   /// Local nodal systems of *TRANSFORM (the last one naming a node wins, as in ccx): internal
   /// node -> its local axes as columns (model::local_frame). *BOUNDARY, *CLOAD and *EQUATION
   /// dofs of these nodes are local components.

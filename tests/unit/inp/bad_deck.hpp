@@ -23,6 +23,9 @@ std::vector<BadDeck> tie_bad_decks();
 /// The *TRANSFORM cases (test_transform.cpp).
 std::vector<BadDeck> transform_bad_decks();
 
+/// The *RIGID BODY and *MPC cases (test_nonlinear_constraint.cpp).
+std::vector<BadDeck> nonlinear_constraint_bad_decks();
+
 /// The *PRE-TENSION SECTION cases (test_pretension.cpp).
 std::vector<BadDeck> pretension_bad_decks();
 

@@ -15,8 +15,8 @@ std::string model_plus(const std::string& tail) { return test::two_cubes_model()
 std::vector<BadDeck> bad_decks() {
   const std::string step = "*STEP\n*STATIC\n";
   return {
-      {"unsupported keyword", model_plus("*MPC\nBEAM, 1, 2\n"), 27, "*MPC",
-       "keyword not supported"},
+      {"unsupported keyword", model_plus("*COUPLING, REF NODE=1, SURFACE=S\n"), 27,
+       "*COUPLING", "keyword not supported"},
       {"hyperelastic ogden unsupported",
        model_plus("*MATERIAL, NAME=P\n*ELASTIC\n1,0\n*HYPERELASTIC, OGDEN\n1,0\n"), 30,
        "*HYPERELASTIC", "OGDEN"},
@@ -162,6 +162,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_
                          case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTransform, inpErrors,
                          ::testing::ValuesIn(test::transform_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedNonlinearConstraint, inpErrors,
+                         ::testing::ValuesIn(test::nonlinear_constraint_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedPretension, inpErrors,
                          ::testing::ValuesIn(test::pretension_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedMaterial, inpErrors,
