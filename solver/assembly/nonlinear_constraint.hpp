@@ -19,8 +19,7 @@ struct ConstraintDof {
 std::vector<ConstraintDof> constraint_dofs(const model::NonlinearConstraint& c);
 
 /// g at global displacements `u` (3 per node) over the undeformed coordinates `coords` (a row
-/// per node), and
-/// with `gradient` its derivative over constraint_dofs(c), in that order.
+/// per node), and with `gradient` its derivative over constraint_dofs(c), in that order.
 Real constraint_value(const model::NonlinearConstraint& c, const MatX3& coords, const VecX& u,
                       VecX* gradient = nullptr);
 
