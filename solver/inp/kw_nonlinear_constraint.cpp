@@ -58,8 +58,9 @@ int largest_component(const Vec3& v) {
   return k;
 }
 
-/// MEANROT: each node three times (once per dof), then the axis node. The dependent dof is
-/// the one the mean rotation depends on most (the solution does not depend on the choice).
+/// MEANROT: each node three times (once per dof), then the axis node. The dependent dof is the
+/// first listed, as in ccx, or, where the rotation hardly depends on it, the one it depends
+/// on most (the solution does not depend on the choice).
 void add_mean_rotation(const Record& record, DeckState& state, const std::vector<int>& listed) {
   const DataLine& head = record.lines.front();
   if (listed.size() < 4 || (listed.size() - 1) % 3 != 0)
@@ -103,16 +104,21 @@ void add_mean_rotation(const Record& record, DeckState& state, const std::vector
   }
   Vec3 mean_turn = Vec3::Zero();
   for (const Vec3& t : turn) mean_turn += t / n;
-  std::size_t dependent = 0;
-  int component = 0;
-  Real best = -1;
+  // ccx's dependent dof, the first listed, unless the rotation hardly depends on it: its force
+  // gives the axis node's torque (RF), which agrees between dofs only at full convergence.
+  auto weight = [&](std::size_t i, int c) { return std::abs(turn[i][c] - mean_turn[c]); };
+  std::size_t dependent = 0, largest = 0;
+  int component = 0, largest_c = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i)
     for (int c = 0; c < 3; ++c)
-      if (const Real g = std::abs(turn[i][c] - mean_turn[c]); g > best) {
-        best = g;
-        dependent = i;
-        component = c;
+      if (weight(i, c) > weight(largest, largest_c)) {
+        largest = i;
+        largest_c = c;
       }
+  if (weight(0, 0) < 1e-3 * weight(largest, largest_c)) {
+    dependent = largest;
+    component = largest_c;
+  }
   NonlinearConstraint c{.kind = NonlinearConstraint::Kind::MeanRotation,
                         .nodes = {nodes[dependent]},
                         .component = component,
