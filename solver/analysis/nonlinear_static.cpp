@@ -609,7 +609,7 @@ class NonlinearStatic {
 }  // namespace
 
 bool needs_newton(const model::Model& model) {
-  if (!model.contact_pairs.empty()) return true;
+  if (!model.contact_pairs.empty() || !model.connectors.empty()) return true;
   for (const auto& step : model.steps)
     if (step.nlgeom) return true;
   for (const auto& el : model.mesh.elements)

@@ -34,7 +34,8 @@ struct NonlinearOptions {
 void run_nonlinear_static(const model::Model& model, const NonlinearOptions& options,
                           FrameSink& frames, EventSink& events);
 
-/// True when some step of the model needs Newton iterations (NLGEOM, *PLASTIC, contact).
+/// True when some step of the model needs Newton iterations (NLGEOM, *PLASTIC, contact,
+/// springs and gaps).
 bool needs_newton(const model::Model& model);
 
 }  // namespace kontakt::analysis

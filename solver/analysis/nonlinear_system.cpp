@@ -1,5 +1,6 @@
 #include "analysis/nonlinear_system.hpp"
 
+#include "analysis/connector.hpp"
 #include "analysis/element_access.hpp"
 #include "analysis/small_strain_frame.hpp"
 #include "element/solid_plastic.hpp"
@@ -126,6 +127,18 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
       for (int c = 0; c < 3; ++c) ev.internal_force[3 * nodes[a] + c] += f_el[e][3 * a + c];
     ev.force_abs_sum += f_el[e].cwiseAbs().sum();
     ev.force_components += f_el[e].size();
+  }
+  for (const model::Connector& c : model.connectors) {  // springs and gaps, serially: few
+    const auto& [a, b] = c.nodes;
+    const ConnectorResponse r =
+        connector_response(c, model.mesh.coords.row(a).transpose(),
+                           model.mesh.coords.row(b).transpose(), u.segment<3>(3 * a),
+                           u.segment<3>(3 * b), nlgeom);
+    assembly::scatter_nodes(plan, {a, b}, prescribed_step, r.stiffness, -r.force, ev.system);
+    ev.internal_force.segment<3>(3 * a) += r.force.head<3>();
+    ev.internal_force.segment<3>(3 * b) += r.force.tail<3>();
+    ev.force_abs_sum += r.force.cwiseAbs().sum();
+    ev.force_components += 6;
   }
   return ev;
 }

@@ -20,8 +20,13 @@ AssemblyPlan make_plan(const model::Model& model, const DofMap& dofs, bool symme
   plan.generation = next_generation();
   plan.dofs = &dofs;
   plan.element_eqs = element_equations(model, dofs);
-  plan.pattern = build_pattern(plan.element_eqs, dofs.n_equations(), symmetric, threads);
   plan.colours = colour_elements(plan.element_eqs, dofs.n_equations());
+  if (!model.connectors.empty()) {  // springs and gaps: node pairs after the elements
+    std::vector<std::vector<int>> pairs;
+    for (const auto& c : model.connectors) pairs.push_back({c.nodes[0], c.nodes[1]});
+    plan.element_eqs = concatenate(plan.element_eqs, group_equations(pairs, dofs));
+  }
+  plan.pattern = build_pattern(plan.element_eqs, dofs.n_equations(), symmetric, threads);
   return plan;
 }
 
@@ -121,6 +126,12 @@ void assemble_loads(const model::Model& model, const AssemblyPlan& plan,
       }
     });
   }
+}
+
+void scatter_nodes(const AssemblyPlan& plan, const std::vector<int>& nodes,
+                   const VecX& prescribed_values, const MatX& K, const VecX& f,
+                   ReducedSystem& out) {
+  scatter_element(nodes, *plan.dofs, plan.pattern, prescribed_values, K, f, out);
 }
 
 void scatter_groups(const AssemblyPlan& plan, const VecX& prescribed_values,

@@ -32,7 +32,9 @@ struct AssemblyPlan {
   const DofMap* dofs = nullptr;
   SparsePattern pattern;
   std::vector<std::vector<int>> colours;  ///< elements sharing no equation
-  ElementEquations element_eqs;           ///< kept to extend the pattern by node groups
+  /// Kept to extend the pattern by node groups: the elements', then the connectors' node
+  /// pairs (Model::connectors order).
+  ElementEquations element_eqs;
   /// Node groups beyond the elements (contact: slave nodes with one master face) that the
   /// pattern includes; scattered by scatter_groups().
   std::vector<std::vector<int>> groups;
@@ -61,6 +63,12 @@ void assemble_loads(const model::Model& model, const AssemblyPlan& plan,
 void scatter_groups(const AssemblyPlan& plan, const VecX& prescribed_values,
                     const std::vector<const MatX*>& K, const std::vector<const VecX*>& f,
                     ReducedSystem& out);
+
+/// Adds the stiffness K and load f of one node group the pattern holds (a connector's node
+/// pair; dof order: the nodes', x, y, z each) into `out` (symmetric K).
+void scatter_nodes(const AssemblyPlan& plan, const std::vector<int>& nodes,
+                   const VecX& prescribed_values, const MatX& K, const VecX& f,
+                   ReducedSystem& out);
 
 /// rhs += T^T f for a nodal force vector f over all 3 * n_nodes dofs.
 void add_nodal_forces(const DofMap& dofs, const VecX& f, VecX& rhs);

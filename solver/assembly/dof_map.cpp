@@ -14,11 +14,15 @@ enum class Kind : char { Inactive, Free, Prescribed, Dependent };
 
 const char* component_name(int c) { return c == 0 ? "x" : c == 1 ? "y" : "z"; }
 
-/// Dofs of nodes that belong to at least one element: the others carry no stiffness.
+/// Dofs of nodes that belong to at least one element or connector: the others carry no
+/// stiffness.
 std::vector<char> attached_dofs(const model::Model& model) {
   std::vector<char> attached(3 * static_cast<std::size_t>(model.n_nodes()), 0);
   for (const auto& el : model.mesh.elements)
     for (int n : el.nodes)
+      for (int c = 0; c < 3; ++c) attached[3 * n + c] = 1;
+  for (const auto& connector : model.connectors)
+    for (int n : connector.nodes)
       for (int c = 0; c < 3; ++c) attached[3 * n + c] = 1;
   return attached;
 }

@@ -35,6 +35,21 @@ struct RawFace {
   int face = 0;
   int line_id = 0;
 };
+/// A SPRINGA or GAPUNI element as read; *SPRING / *GAP give it its law.
+struct RawConnector {
+  model::Connector::Kind kind = model::Connector::Kind::Spring;
+  int label = 0;
+  std::array<int, 2> node_labels{};
+  SourceLoc where;
+};
+/// *SPRING or *GAP as read: the law for the connectors of an element set.
+struct RawConnectorLaw {
+  std::string elset;
+  model::Connector law;  ///< kind and the law's fields
+  SourceLoc where;
+  std::string keyword;
+};
+
 /// *RIGID BODY as read: its nodes are resolved once the elements are (ELSET=).
 struct RawRigidBody {
   std::optional<std::string> nset, elset;  ///< exactly one is set
@@ -138,6 +153,9 @@ struct DeckState {
   std::map<std::string, RawSurface> surfaces;
   std::vector<RawSection> sections;
   std::vector<RawRigidBody> rigid_bodies;
+  std::vector<RawConnector> connectors;
+  std::unordered_map<int, int> connector_index;  ///< label -> index into connectors
+  std::vector<RawConnectorLaw> connector_laws;
   std::map<std::string, int> material_index;
   std::map<std::string, model::Orientation> orientations;  ///< *ORIENTATION by name
   std::map<std::string, int> amplitude_index;

@@ -40,6 +40,10 @@ void handle_cyclic_symmetry_model(const Record&, DeckState&);
 // kw_model_change.cpp
 void handle_model_change(const Record&, DeckState&);
 
+// kw_connector.cpp
+void handle_spring(const Record&, DeckState&);
+void handle_gap(const Record&, DeckState&);
+
 // kw_nonlinear_constraint.cpp
 void handle_rigid_body(const Record&, DeckState&);
 void handle_mpc(const Record&, DeckState&);

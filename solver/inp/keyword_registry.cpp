@@ -44,6 +44,8 @@ constexpr KeywordSpec kKeywords[] = {
     {"EQUATION", M, None, handle_equation},
     {"RIGIDBODY", M, None, handle_rigid_body},
     {"MPC", M, None, handle_mpc},
+    {"SPRING", M, None, handle_spring},
+    {"GAP", M, None, handle_gap},
     {"AMPLITUDE", A, None, handle_amplitude},
     {"TIMEPOINTS", M, None, handle_time_points},
     {"BOUNDARY", A, None, handle_boundary},

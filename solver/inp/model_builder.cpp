@@ -71,7 +71,25 @@ std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
 
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
                                      const std::string& name) {
-  return set_members(set, name, state, state.model.mesh.element_index, "element", "*ELSET");
+  if (state.connector_index.empty())
+    return set_members(set, name, state, state.model.mesh.element_index, "element", "*ELSET");
+  RawSet solids = set;  // without its SPRINGA and GAPUNI elements (Model::connectors)
+  std::vector<int> labels, line_ids;
+  for (std::size_t i = 0; i < set.labels.size(); ++i)
+    if (!state.connector_index.contains(set.labels[i])) {
+      labels.push_back(set.labels[i]);
+      line_ids.push_back(set.line_ids[i]);
+    }
+  solids.labels = std::move(labels);
+  solids.line_ids = std::move(line_ids);
+  return set_members(solids, name, state, state.model.mesh.element_index, "element", "*ELSET");
+}
+
+std::vector<int> connector_labels(const DeckState& state, const RawSet& set) {
+  std::vector<int> labels;
+  for (const auto& [label, line_id] : set_labels(set, state.connector_index))
+    if (state.connector_index.contains(label)) labels.push_back(label);
+  return labels;
 }
 
 int node_index_of(const DeckState& state, const Record& record, const DataLine& line,
@@ -456,6 +474,7 @@ model::Model finish_model(DeckState& state) {
   resolve_contact(state);
   resolve_ties(state);
   resolve_rigid_bodies(state);
+  resolve_connectors(state);
   resolve_section_changes(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());

@@ -29,7 +29,8 @@ std::vector<std::pair<int, int>> set_labels(const RawSet& set,
                                             const std::unordered_map<int, int>& index);
 
 /// Members of a set as internal indices, sorted by deck label and deduplicated; throws at the
-/// defining line of the first member that does not exist.
+/// defining line of the first member that does not exist. Element sets leave out their
+/// SPRINGA and GAPUNI elements (connector_labels).
 std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
                                   const std::string& name);
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
@@ -38,6 +39,13 @@ std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
 /// Amplitude index for an AMPLITUDE= parameter, -1 when absent; with TIME DELAY= the index of a
 /// copy of the amplitude moved later in time by the delay.
 int amplitude_param(DeckState& state, const Record& record);
+
+/// The SPRINGA and GAPUNI labels of an element set (DeckState::connector_index).
+std::vector<int> connector_labels(const DeckState& state, const RawSet& set);
+
+/// Builds Model::connectors from their *ELEMENT lines and their *SPRING / *GAP laws
+/// (kw_connector.cpp).
+void resolve_connectors(DeckState& state);
 
 /// Turns the *RIGID BODY cards into Model::nonlinear_constraints, once the elements are
 /// resolved (kw_nonlinear_constraint.cpp).

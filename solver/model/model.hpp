@@ -3,6 +3,7 @@
 // with the deck's labels kept for output.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -155,6 +156,27 @@ struct Equation {
   std::string keyword = "*EQUATION";  ///< the card it comes from (*EQUATION, *TIE), for messages
 };
 
+/// A two-node element outside the solid library, assembled as a node pair
+/// (analysis/connector): a SPRINGA spring (*SPRING) or a GAPUNI gap (*GAP).
+struct Connector {
+  enum class Kind { Spring, Gap };
+  Kind kind = Kind::Spring;
+  int id = 0;                     ///< deck label
+  std::array<int, 2> nodes{};     ///< internal indices
+  /// Spring: the force against the elongation (final minus initial length): linear with
+  /// `stiffness`, or piecewise linear through `curve` (elongation, force), ascending, constant
+  /// beyond its ends (ccx).
+  Real stiffness = 0;
+  std::vector<std::pair<Real, Real>> curve;
+  /// Gap: open while clearance + direction . (u_2 - u_1) >= 0; closed, a penalty of
+  /// `stiffness` with the tensile force `tension` at infinite opening (ccx's node-to-face
+  /// linear law).
+  Real clearance = 0;
+  Vec3 direction = Vec3::UnitX();
+  Real tension = 0;
+  SourceLoc where;                ///< its *ELEMENT line
+};
+
 /// A nonlinear multiple point constraint g(u) = 0 over the dofs of a few nodes, solved for
 /// one dependent dof (*RIGID BODY, *MPC PLANE / STRAIGHT / MEANROT;
 /// assembly/nonlinear_constraint).
@@ -300,6 +322,7 @@ struct Model {
   /// Re-linearised at every iteration of an NLGEOM step, linear (at the undeformed state)
   /// otherwise.
   std::vector<NonlinearConstraint> nonlinear_constraints;
+  std::vector<Connector> connectors;
   /// Local nodal systems of *TRANSFORM (the last one naming a node wins, as in ccx): internal
   /// node -> its local axes as columns (model::local_frame). *BOUNDARY, *CLOAD and *EQUATION
   /// dofs of these nodes are local components.

@@ -23,6 +23,9 @@ std::vector<BadDeck> tie_bad_decks();
 /// The *TRANSFORM cases (test_transform.cpp).
 std::vector<BadDeck> transform_bad_decks();
 
+/// The SPRINGA, GAPUNI, *SPRING and *GAP cases (test_connector.cpp).
+std::vector<BadDeck> connector_bad_decks();
+
 /// The *RIGID BODY and *MPC cases (test_nonlinear_constraint.cpp).
 std::vector<BadDeck> nonlinear_constraint_bad_decks();
 
