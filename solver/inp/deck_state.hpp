@@ -50,6 +50,13 @@ struct RawConnectorLaw {
   std::string keyword;
 };
 
+/// *DISTRIBUTING COUPLING as read: its DCOUP3D element set and (node or set, weight) lines.
+struct RawCoupling {
+  std::string elset;
+  std::vector<std::pair<std::string, Real>> members;
+  SourceLoc where;
+};
+
 /// *RIGID BODY as read: its nodes are resolved once the elements are (ELSET=).
 struct RawRigidBody {
   std::optional<std::string> nset, elset;  ///< exactly one is set
@@ -156,6 +163,9 @@ struct DeckState {
   std::vector<RawConnector> connectors;
   std::unordered_map<int, int> connector_index;  ///< label -> index into connectors
   std::vector<RawConnectorLaw> connector_laws;
+  /// DCOUP3D elements: label -> node label (the reference node of a distributing coupling).
+  std::unordered_map<int, int> coupling_elements;
+  std::vector<RawCoupling> couplings;
   std::map<std::string, int> material_index;
   std::map<std::string, model::Orientation> orientations;  ///< *ORIENTATION by name
   std::map<std::string, int> amplitude_index;

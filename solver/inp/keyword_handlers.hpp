@@ -40,6 +40,9 @@ void handle_cyclic_symmetry_model(const Record&, DeckState&);
 // kw_model_change.cpp
 void handle_model_change(const Record&, DeckState&);
 
+// kw_coupling.cpp
+void handle_distributing_coupling(const Record&, DeckState&);
+
 // kw_connector.cpp
 void handle_spring(const Record&, DeckState&);
 void handle_gap(const Record&, DeckState&);

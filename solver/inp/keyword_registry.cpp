@@ -46,6 +46,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"MPC", M, None, handle_mpc},
     {"SPRING", M, None, handle_spring},
     {"GAP", M, None, handle_gap},
+    {"DISTRIBUTINGCOUPLING", M, None, handle_distributing_coupling},
     {"AMPLITUDE", A, None, handle_amplitude},
     {"TIMEPOINTS", M, None, handle_time_points},
     {"BOUNDARY", A, None, handle_boundary},

@@ -156,11 +156,25 @@ void read_connectors(const Record& record, DeckState& state, model::Connector::K
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 3, 3);
     const int label = int_field(record, line, 0);
-    if (state.model.mesh.element_index.contains(label) ||
+    if (state.model.mesh.element_index.contains(label) || state.coupling_elements.contains(label) ||
         !state.connector_index.try_emplace(label, state.connectors.size()).second)
       fail(record, line, "element " + std::to_string(label) + " defined twice");
     state.connectors.push_back(
         {kind, label, {int_field(record, line, 1), int_field(record, line, 2)}, line.where});
+    if (elset) add_label(state.element_sets[*elset], label, state.intern(line.where));
+  }
+}
+
+/// DCOUP3D lines (label, node): the reference node of a *DISTRIBUTING COUPLING, no element.
+void read_coupling_elements(const Record& record, DeckState& state) {
+  const std::optional<std::string> elset = name_value(record, "ELSET");
+  if (elset) open_set(state.element_sets, *elset, record.where);
+  for (const DataLine& line : record.lines) {
+    require_field_count(record, line, 2, 2);
+    const int label = int_field(record, line, 0);
+    if (state.model.mesh.element_index.contains(label) || state.connector_index.contains(label) ||
+        !state.coupling_elements.try_emplace(label, int_field(record, line, 1)).second)
+      fail(record, line, "element " + std::to_string(label) + " defined twice");
     if (elset) add_label(state.element_sets[*elset], label, state.intern(line.where));
   }
 }
@@ -173,6 +187,7 @@ void handle_element(const Record& record, DeckState& state) {
   if (const std::string upper = to_upper(type_name); upper == "SPRINGA" || upper == "GAPUNI")
     return read_connectors(record, state, upper == "SPRINGA" ? model::Connector::Kind::Spring
                                                               : model::Connector::Kind::Gap);
+  if (to_upper(type_name) == "DCOUP3D") return read_coupling_elements(record, state);
   const std::optional<ElementName> type = find_element_name(type_name);
   if (!type) fail(record, "element type " + to_upper(type_name) + " is not supported");
   const std::optional<std::string> elset = name_value(record, "ELSET");
@@ -198,7 +213,8 @@ void handle_element(const Record& record, DeckState& state) {
     std::vector<int> nodes(static_cast<std::size_t>(type->n_nodes));
     for (std::size_t n = 0; n < nodes.size(); ++n) nodes[n] = int_field(record, joined, n + 1);
     const auto [it, inserted] = mesh.element_index.try_emplace(label, mesh.elements.size());
-    if (!inserted || state.connector_index.contains(label))
+    if (!inserted || state.connector_index.contains(label) ||
+        state.coupling_elements.contains(label))
       fail(record, first, "element " + std::to_string(label) + " defined twice");
     mesh.elements.push_back(model::Element{label, type->type, {}, -1, type->planar});
     state.element_node_labels.push_back(std::move(nodes));

@@ -71,12 +71,13 @@ std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
 
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
                                      const std::string& name) {
-  if (state.connector_index.empty())
+  if (state.connector_index.empty() && state.coupling_elements.empty())
     return set_members(set, name, state, state.model.mesh.element_index, "element", "*ELSET");
-  RawSet solids = set;  // without its SPRINGA and GAPUNI elements (Model::connectors)
+  RawSet solids = set;  // without its SPRINGA, GAPUNI and DCOUP3D elements
   std::vector<int> labels, line_ids;
   for (std::size_t i = 0; i < set.labels.size(); ++i)
-    if (!state.connector_index.contains(set.labels[i])) {
+    if (!state.connector_index.contains(set.labels[i]) &&
+        !state.coupling_elements.contains(set.labels[i])) {
       labels.push_back(set.labels[i]);
       line_ids.push_back(set.line_ids[i]);
     }
@@ -475,6 +476,7 @@ model::Model finish_model(DeckState& state) {
   resolve_ties(state);
   resolve_rigid_bodies(state);
   resolve_connectors(state);
+  resolve_couplings(state);
   resolve_section_changes(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());

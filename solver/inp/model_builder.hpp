@@ -30,7 +30,7 @@ std::vector<std::pair<int, int>> set_labels(const RawSet& set,
 
 /// Members of a set as internal indices, sorted by deck label and deduplicated; throws at the
 /// defining line of the first member that does not exist. Element sets leave out their
-/// SPRINGA and GAPUNI elements (connector_labels).
+/// SPRINGA, GAPUNI (connector_labels) and DCOUP3D elements.
 std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
                                   const std::string& name);
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
@@ -46,6 +46,9 @@ std::vector<int> connector_labels(const DeckState& state, const RawSet& set);
 /// Builds Model::connectors from their *ELEMENT lines and their *SPRING / *GAP laws
 /// (kw_connector.cpp).
 void resolve_connectors(DeckState& state);
+
+/// Turns each *DISTRIBUTING COUPLING into three equations (kw_coupling.cpp).
+void resolve_couplings(DeckState& state);
 
 /// Turns the *RIGID BODY cards into Model::nonlinear_constraints, once the elements are
 /// resolved (kw_nonlinear_constraint.cpp).

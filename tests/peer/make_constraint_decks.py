@@ -14,6 +14,10 @@ Linear decks (E = 210000, nu = 0.3):
                     about all three axes (1e-3 rad), the reference node free.
   meanrot_torque    C3D20 1 x 1 x 4; the end face's eight nodes turned through MEANROT about
                     the bar's axis by a torque on the axis node (no rotation prescribed).
+  coupling_force    C3D8 2 x 2 x 8; the end face's nodes coupled to a reference node
+                    (*DISTRIBUTING COUPLING, weights 1 to 3 by node) that carries a force.
+  coupling_shift    the same coupling moved by a prescribed displacement of the reference
+                    node (U everywhere, RF at the clamp).
 NLGEOM decks (increments 0.25 of a step of 1):
   rigid_turn        rigid_loads' bar with its end turned by 0.9 rad about a skew axis
                     (prescribed on the rotation node), the reference node free.
@@ -113,6 +117,26 @@ def decks():
     d.cload([(AXIS, 1, 500.0)])
     outputs(d)
     linear["meanrot_torque"] = d.text()
+
+    for name, load in (("coupling_force", "force"), ("coupling_shift", "shift")):
+        mesh, d = bar("C3D8", (2, 2, 8), f"distributing coupling, {load}")
+        face = mesh.nsets["ZMAX"]
+        d.model_extra += ["*NODE", f"{REF}, 0., 0., 0.", "*ELEMENT, TYPE=DCOUP3D, ELSET=COUPLING",
+                          f"900, {REF}", "*DISTRIBUTING COUPLING, ELSET=COUPLING"]
+        d.model_extra += [f"{n}, {1 + k % 3}." for k, n in enumerate(face)]
+        if load == "force":
+            f = TILT @ np.array([120.0, -60.0, 300.0])
+            d.cload([(REF, k + 1, f[k]) for k in range(3)])
+            with_print_set(d, [REF])
+            outputs(d)
+        else:
+            shift = TILT @ np.array([0.02, 0.01, -0.005])
+            d.boundary([(REF, k + 1, k + 1, shift[k]) for k in range(3)])
+            with_print_set(d, [REF])
+            d.node_print("ALL2", "U")
+            d.node_print("ZMIN", "RF")
+            d.el_print("EALL", "S")
+        linear[name] = d.text()
 
     _, d = rigid("C3D8", (2, 2, 8), "rigid end face turned by 0.9 rad", "NSET")
     theta = 0.9 * np.array([0.3, -0.5, 0.81]) / np.linalg.norm([0.3, -0.5, 0.81])

@@ -9,7 +9,8 @@ the FIRST check a deck breaks is its exclusion reason:
 
   (a) every *ELEMENT has TYPE= one of ELEMENT_TYPES
       (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R, the plane stress, plane strain
-      and axisymmetric CPS/CPE/CAX 3, 4, 4R, 6, 8, 8R, and the SPRINGA and GAPUNI connectors);
+      and axisymmetric CPS/CPE/CAX 3, 4, 4R, 6, 8, 8R, the SPRINGA and GAPUNI connectors and
+      the DCOUP3D reference element);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
       - no parameter in FORBIDDEN_PARAMETERS (USER) on any keyword;
       - *ELASTIC: TYPE= absent, ISO, ORTHO, ENGINEERING CONSTANTS or ANISO; *EXPANSION: TYPE=
@@ -84,7 +85,7 @@ import sys
 DEFAULT_SUITE = "/usr/share/doc/calculix-ccx-test/examples/test"
 
 ELEMENT_TYPES = {"C3D4", "C3D6", "C3D8", "C3D8R", "C3D8I", "C3D10", "C3D15", "C3D20", "C3D20R",
-                 "SPRINGA", "GAPUNI"} | {
+                 "SPRINGA", "GAPUNI", "DCOUP3D"} | {
     f"{kind}{shape}" for kind in ("CPS", "CPE", "CAX") for shape in ("3", "4", "4R", "6", "8", "8R")}
 SUPPORTED_KEYWORDS = {
     "HEADING", "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "ELASTIC", "DENSITY",
@@ -92,6 +93,7 @@ SUPPORTED_KEYWORDS = {
     "DLOAD", "EQUATION", "AMPLITUDE", "STEP", "STATIC", "END STEP", "NODE PRINT", "EL PRINT",
     "NODE FILE", "EL FILE", "NODE OUTPUT", "ELEMENT OUTPUT", "OUTPUT", "FILE FORMAT", "CONTROLS",
     "TRANSFORM", "ORIENTATION", "PRE-TENSION SECTION", "RIGID BODY", "MPC", "SPRING", "GAP",
+    "DISTRIBUTING COUPLING",
 }
 # *MPC types Kontakt builds; PLANE and STRAIGHT switch NLGEOM on in ccx (not MEANROT).
 MPC_TYPES = {"PLANE", "STRAIGHT", "MEANROT"}

@@ -23,6 +23,9 @@ std::vector<BadDeck> tie_bad_decks();
 /// The *TRANSFORM cases (test_transform.cpp).
 std::vector<BadDeck> transform_bad_decks();
 
+/// The *DISTRIBUTING COUPLING cases (test_coupling.cpp).
+std::vector<BadDeck> coupling_bad_decks();
+
 /// The SPRINGA, GAPUNI, *SPRING and *GAP cases (test_connector.cpp).
 std::vector<BadDeck> connector_bad_decks();
 

@@ -162,6 +162,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedTie, inpErrors, ::testing::ValuesIn(test::tie_
                          case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedTransform, inpErrors,
                          ::testing::ValuesIn(test::transform_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedCoupling, inpErrors,
+                         ::testing::ValuesIn(test::coupling_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedConnector, inpErrors,
                          ::testing::ValuesIn(test::connector_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedNonlinearConstraint, inpErrors,
