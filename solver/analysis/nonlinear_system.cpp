@@ -24,8 +24,9 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   const bool plastic = !element_material_def(model, el).plastic.empty();
   if (nlgeom && plastic) {
     element::NlgeomPlasticResult r;
-    element::nlgeom_plastic_element(el.type, X, mat, element_material_def(model, el).plastic, ue, dTe, committed,
-                                    true, r);
+    const model::Material& def = element_material_def(model, el);
+    element::nlgeom_plastic_element(el.type, X, mat, element::PlasticHardening(def.plastic, def.hardening_rule, &def.cyclic),
+                                    ue, dTe, committed, true, r);
     *K = std::move(r.tangent);
     f_int = std::move(r.internal_force);
     trial = std::move(r.state);

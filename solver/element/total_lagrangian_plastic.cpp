@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "element/solid_kernels.hpp"
+#include "material/j2_finite_kinematic.hpp"
 
 namespace kontakt::element {
 
@@ -28,10 +29,29 @@ Vec6 hourglass_modulus_gradient(const LinearElastic& mat, const material::Harden
   return g;
 }
 
+/// The kinematic (or combined) return in the isotropic model's result form: its exact tangent
+/// stands for both tangent choices.
+material::J2FiniteResult kinematic_point(const LinearElastic& m, const material::HardeningTable& curve,
+                                         const material::HardeningTable* cyclic,
+                                         const material::J2State& committed, const Mat3& C) {
+  const material::J2KinematicState from{committed.plastic_strain,
+                                        committed.equivalent_plastic_strain,
+                                        committed.back_stress};
+  const material::J2FiniteKinematicResult k =
+      material::j2_finite_kinematic(m.young, m.poisson, curve, cyclic, from, C);
+  material::J2FiniteResult r;
+  r.stress = k.stress;
+  r.tangent = r.kirchhoff_tangent = k.tangent;
+  r.state = {k.state.plastic_strain, k.state.equivalent_plastic_strain, k.state.back_stress};
+  r.yielded = k.yielded;
+  r.delta_alpha = k.delta_alpha;
+  return r;
+}
+
 }  // namespace
 
 void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
-                            const material::HardeningCurves& hardening, const MatX3& u,
+                            const PlasticHardening& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out, PlasticTangent tangent_choice) {
   auto kernel = [&](const std::vector<KernelPoint>& points, const MatX3& values, bool tangent,
@@ -44,13 +64,20 @@ void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElasti
     out.state.points.resize(nip);
     out.state.work.resize(nip);
     Mat3 Fm_first;  // the mechanical deformation gradient of the first point
-    material::HardeningTable scratch, first_curve;
+    material::HardeningTable scratch, first_curve, cyclic_scratch;
     auto j2 = [&](Index k, const Mat3&, const Mat3& Fm) {
       const PointElastic& point = points[static_cast<std::size_t>(k)].material;
       const LinearElastic& m = point.constants;
-      const material::HardeningTable& curve = hardening.at(point.temperature, scratch);
-      const material::J2FiniteResult r = material::j2_finite_strain(
-          m.young, m.poisson, curve, committed.points[k], Fm.transpose() * Fm);
+      const material::HardeningTable& curve = hardening.curves->at(point.temperature, scratch);
+      const material::J2FiniteResult r =
+          hardening.rule == material::HardeningRule::Isotropic
+              ? material::j2_finite_strain(m.young, m.poisson, curve, committed.points[k],
+                                           Fm.transpose() * Fm)
+              : kinematic_point(m, curve,
+                                hardening.rule == material::HardeningRule::Combined
+                                    ? &hardening.cyclic->at(point.temperature, cyclic_scratch)
+                                    : nullptr,
+                                committed.points[k], Fm.transpose() * Fm);
       out.peeq(k) = r.state.equivalent_plastic_strain;
       out.state.points[k] = r.state;
       const PointWork before = committed.work.empty() ? PointWork{} : committed.work[k];

@@ -15,6 +15,18 @@
 
 namespace kontakt::element {
 
+/// A *PLASTIC material's hardening: its curves by temperature and rule, and for COMBINED the
+/// *CYCLIC HARDENING curves. KINEMATIC and COMBINED integrate material/j2_finite_kinematic.
+struct PlasticHardening {
+  explicit PlasticHardening(const material::HardeningCurves& isotropic) : curves(&isotropic) {}
+  PlasticHardening(const material::HardeningCurves& c, material::HardeningRule r,
+                   const material::HardeningCurves* cyclic_curves)
+      : curves(&c), rule(r), cyclic(cyclic_curves) {}
+  const material::HardeningCurves* curves;
+  material::HardeningRule rule = material::HardeningRule::Isotropic;
+  const material::HardeningCurves* cyclic = nullptr;
+};
+
 /// Which material tangent the element integrates.
 enum class PlasticTangent {
   exact,      ///< the derivative of the forces (unsymmetric where points yield)
@@ -41,9 +53,18 @@ struct NlgeomPlasticResult {
 /// an inverted element or a failed local iteration. Each point reads the hardening at its
 /// temperature.
 void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
-                            const material::HardeningCurves& hardening, const MatX3& u,
+                            const PlasticHardening& hardening, const MatX3& u,
                             const VecX& dT, const ElementState& committed, bool want_tangent,
                             NlgeomPlasticResult& out,
                             PlasticTangent tangent = PlasticTangent::kirchhoff);
+/// The same for isotropic hardening.
+inline void nlgeom_plastic_element(ElementType type, const MatX3& X, const ThermoElastic& mat,
+                                   const material::HardeningCurves& hardening, const MatX3& u,
+                                   const VecX& dT, const ElementState& committed,
+                                   bool want_tangent, NlgeomPlasticResult& out,
+                                   PlasticTangent tangent = PlasticTangent::kirchhoff) {
+  nlgeom_plastic_element(type, X, mat, PlasticHardening(hardening), u, dT, committed, want_tangent,
+                         out, tangent);
+}
 
 }  // namespace kontakt::element

@@ -21,6 +21,7 @@ void handle_hyperelastic(const Record&, DeckState&);
 void handle_deformation_plasticity(const Record&, DeckState&);
 void handle_change_solid_section(const Record&, DeckState&);
 void handle_plastic(const Record&, DeckState&);
+void handle_cyclic_hardening(const Record&, DeckState&);
 void handle_density(const Record&, DeckState&);
 void handle_expansion(const Record&, DeckState&);
 void handle_solid_section(const Record&, DeckState&);

@@ -29,6 +29,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"DEFORMATIONPLASTICITY", M, Mat, handle_deformation_plasticity},
     {"DENSITY", M, Mat, handle_density},
     {"PLASTIC", M, Mat, handle_plastic},
+    {"CYCLICHARDENING", M, Mat, handle_cyclic_hardening},
     {"EXPANSION", M, Mat, handle_expansion},
     {"SOLIDSECTION", M, None, handle_solid_section},
     {"SURFACEINTERACTION", M, Inter, handle_surface_interaction},

@@ -192,14 +192,13 @@ void handle_deformation_plasticity(const Record& record, DeckState& state) {
   current_material(record, state).deformation_plasticity = law;
 }
 
-void handle_plastic(const Record& record, DeckState& state) {
-  check_params(record, {"HARDENING"});
-  const std::string hardening = to_upper(name_value(record, "HARDENING").value_or("ISOTROPIC"));
-  if (hardening != "ISOTROPIC")
-    fail(record, "HARDENING=" + hardening + " is not supported yet (only ISOTROPIC)");
-  model::Material& material = current_material(record, state);
+namespace {
+
+/// The (stress, plastic strain[, temperature]) lines of *PLASTIC or *CYCLIC HARDENING: one
+/// curve per temperature, its lines together.
+material::HardeningCurves read_hardening_curves(const Record& record,
+                                                const model::Material& material) {
   require_line_count(record, 1, 10000);
-  // One curve per temperature (the third column, 0 when empty), its lines together.
   material::HardeningCurves curves;
   for (const DataLine& line : record.lines) {
     require_field_count(record, line, 2, 3);
@@ -232,7 +231,31 @@ void handle_plastic(const Record& record, DeckState& state) {
     }
     points.emplace_back(stress, strain);
   }
-  material.plastic = std::move(curves);
+  return curves;
+}
+
+}  // namespace
+
+void handle_plastic(const Record& record, DeckState& state) {
+  check_params(record, {"HARDENING"});
+  const std::string hardening = to_upper(name_value(record, "HARDENING").value_or("ISOTROPIC"));
+  model::Material& material = current_material(record, state);
+  if (hardening == "ISOTROPIC")
+    material.hardening_rule = material::HardeningRule::Isotropic;
+  else if (hardening == "KINEMATIC")
+    material.hardening_rule = material::HardeningRule::Kinematic;
+  else if (hardening == "COMBINED")
+    material.hardening_rule = material::HardeningRule::Combined;
+  else
+    fail(record, "HARDENING=" + hardening +
+                     " is not supported (ISOTROPIC, KINEMATIC and COMBINED are)");
+  material.plastic = read_hardening_curves(record, material);
+}
+
+void handle_cyclic_hardening(const Record& record, DeckState& state) {
+  check_params(record, {});
+  model::Material& material = current_material(record, state);
+  material.cyclic = read_hardening_curves(record, material);
 }
 
 void handle_density(const Record& record, DeckState& state) {

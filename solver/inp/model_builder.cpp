@@ -238,6 +238,32 @@ void require_deformation_plasticity_support(const model::Model& model, const mod
   }
 }
 
+/// KINEMATIC and COMBINED hardening run in the finite-strain kernels (NLGEOM steps; ccx switches
+/// NLGEOM on for *PLASTIC anyway); COMBINED needs its *CYCLIC HARDENING curve, which nothing
+/// else reads.
+void require_hardening_support(const model::Model& model, const model::Material& mat) {
+  using material::HardeningRule;
+  const std::string rule = mat.hardening_rule == HardeningRule::Kinematic ? "KINEMATIC" : "COMBINED";
+  if (!mat.cyclic.empty() && mat.hardening_rule != HardeningRule::Combined)
+    throw InputError(mat.where, "*CYCLIC HARDENING",
+                     "material " + mat.name + ": *CYCLIC HARDENING needs *PLASTIC, "
+                                              "HARDENING=COMBINED");
+  if (mat.hardening_rule == HardeningRule::Isotropic) return;
+  if (mat.hardening_rule == HardeningRule::Combined && mat.cyclic.empty())
+    throw InputError(mat.where, "*PLASTIC",
+                     "material " + mat.name + ": HARDENING=COMBINED needs a *CYCLIC HARDENING "
+                                              "curve (the yield surface's size)");
+  if (mat.plastic.curves.size() > 1 || mat.cyclic.curves.size() > 1)
+    throw InputError(mat.where, "*PLASTIC",
+                     "material " + mat.name + ": HARDENING=" + rule +
+                         " with curves by temperature is not supported (one curve)");
+  for (const model::Step& step : model.steps)
+    if (!step.nlgeom)
+      throw InputError(step.where, "*STEP",
+                       "material " + mat.name + " hardens " + rule +
+                           " (*PLASTIC): every step needs NLGEOM");
+}
+
 void assign_sections(DeckState& state) {
   model::Model& model = state.model;
   for (const RawSection& raw : state.sections) {
@@ -263,6 +289,7 @@ void assign_sections(DeckState& state) {
                            "material " + mat.name + " is hyperelastic: every step needs NLGEOM");
     }
     if (mat.deformation_plasticity) require_deformation_plasticity_support(model, mat);
+    require_hardening_support(model, mat);
     if (!mat.anisotropic.empty() && !mat.plastic.empty())
       throw InputError(mat.where, "*MATERIAL",
                        "material " + mat.name + ": *PLASTIC needs an isotropic *ELASTIC "

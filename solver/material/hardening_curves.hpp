@@ -11,6 +11,11 @@
 
 namespace kontakt::material {
 
+/// How *PLASTIC's curve hardens: ISOTROPIC (the yield surface grows), KINEMATIC (it moves; its
+/// size stays the curve's first stress), COMBINED (it moves, and grows along the *CYCLIC
+/// HARDENING curve).
+enum class HardeningRule { Isotropic, Kinematic, Combined };
+
 struct HardeningCurves {
   std::vector<Real> temperatures;       ///< strictly ascending, one per curve
   std::vector<HardeningTable> curves;

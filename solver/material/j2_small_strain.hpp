@@ -20,6 +20,7 @@ namespace kontakt::material {
 struct J2State {
   Vec6 plastic_strain = Vec6::Zero();   ///< tensor shear components, trace 0
   Real equivalent_plastic_strain = 0;   ///< alpha = integral of sqrt(2/3 deps_p:deps_p)
+  Vec6 back_stress = Vec6::Zero();      ///< kinematic and combined hardening; else zero
 };
 
 struct J2Result {

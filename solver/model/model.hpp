@@ -108,8 +108,11 @@ struct Material {
   material::TemperatureTable<1> density;    ///< *DENSITY per temperature
   material::TemperatureTable<1> expansion;  ///< *EXPANSION, isotropic secant coefficient
   Real expansion_zero = 0;                  ///< *EXPANSION, ZERO= reference temperature
-  /// *PLASTIC (isotropic hardening): one curve per temperature; empty for an elastic material.
+  /// *PLASTIC: one curve per temperature; empty for an elastic material. Its HARDENING= rule,
+  /// and for COMBINED the *CYCLIC HARDENING curves (the yield surface's size).
   material::HardeningCurves plastic;
+  material::HardeningRule hardening_rule = material::HardeningRule::Isotropic;
+  material::HardeningCurves cyclic;
   SourceLoc where;
 
   bool has_elastic() const {

@@ -33,7 +33,8 @@ the FIRST check a deck breaks is its exclusion reason:
 
 The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same rule except
 that it requires a *STEP with NLGEOM instead of forbidding it, and admits *PLASTIC with
-isotropic hardening: HARDENING= absent or ISOTROPIC (curves by temperature admitted), and
+HARDENING= absent, ISOTROPIC, KINEMATIC or COMBINED (with *CYCLIC HARDENING; curves by
+temperature admitted), and
 *HYPERELASTIC with a potential of HYPERELASTIC_MODELS in a deck without *DLOAD, and *DEFORMATION
 PLASTICITY in a deck that prints no ENER or ELSE. The linear set keeps *PLASTIC out: ccx
 switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
@@ -272,9 +273,10 @@ def _contact_limit(keyword, params, data):
 
 
 def plastic_exclusion(params):
-    """Why a *PLASTIC record is outside the nonlinear set, or None: isotropic hardening only."""
+    """Why a *PLASTIC record is outside the nonlinear set, or None: isotropic, kinematic or
+    combined hardening."""
     hardening = params.get("HARDENING", "ISOTROPIC").upper()
-    if hardening != "ISOTROPIC":
+    if hardening not in ("ISOTROPIC", "KINEMATIC", "COMBINED"):
         return f"*PLASTIC, HARDENING={hardening}"
     return None
 
@@ -314,6 +316,8 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
             reason = plastic_exclusion(params)
             if reason:
                 return reason
+            continue
+        if keyword == "CYCLIC HARDENING" and nlgeom:  # (b), nonlinear set only
             continue
         if keyword == "DEFORMATION PLASTICITY" and nlgeom:  # (b), nonlinear set only
             # Kontakt has no energy of this law to print (ccx's ENER of it is not known).

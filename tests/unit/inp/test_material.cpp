@@ -13,7 +13,27 @@ namespace test {
 std::vector<BadDeck> material_bad_decks() {
   // The two cubes end at line 26: a *MATERIAL appended is line 27, its next card line 28.
   const auto plus = [](const std::string& tail) { return two_cubes_model() + tail; };
+  // The cubes of material P (lines 27-29), its *PLASTIC at line 30, the curve at 31.
+  const auto plastic = [](const std::string& hardening, const std::string& tail) {
+    std::string deck = two_cubes_model();
+    deck.replace(deck.rfind("MATERIAL=STEEL"), 14, "MATERIAL=P");
+    return deck + "*MATERIAL, NAME=P\n*ELASTIC\n210000., .3\n*PLASTIC" + hardening +
+           "\n800., 0.\n1000., 0.1\n" + tail;
+  };
+  const std::string nlgeom_step = "*STEP, NLGEOM\n*STATIC\n*END STEP\n";
   return {
+      {"plastic hardening unknown", plastic(", HARDENING=FOO", nlgeom_step), 30, "*PLASTIC",
+       "HARDENING=FOO is not supported (ISOTROPIC, KINEMATIC and COMBINED are)"},
+      {"combined without cyclic curve", plastic(", HARDENING=COMBINED", nlgeom_step), 27,
+       "*PLASTIC", "HARDENING=COMBINED needs a *CYCLIC HARDENING curve"},
+      {"cyclic curve with isotropic hardening",
+       plastic("", "*CYCLIC HARDENING\n800., 0.\n" + nlgeom_step), 27, "*CYCLIC HARDENING",
+       "*CYCLIC HARDENING needs *PLASTIC, HARDENING=COMBINED"},
+      {"kinematic curves by temperature",
+       plastic(", HARDENING=KINEMATIC", "800., 0., 100.\n" + nlgeom_step), 27, "*PLASTIC",
+       "HARDENING=KINEMATIC with curves by temperature is not supported"},
+      {"kinematic without nlgeom", plastic(", HARDENING=KINEMATIC", "*STEP\n*STATIC\n*END STEP\n"),
+       33, "*STEP", "hardens KINEMATIC (*PLASTIC): every step needs NLGEOM"},
       {"elastic temperatures descending",
        plus("*MATERIAL, NAME=T\n*ELASTIC\n2., .3, 100.\n1., .3, 20.\n"), 30, "*ELASTIC",
        "temperatures must increase from line to line"},

@@ -422,7 +422,7 @@ TEST(inpMaterial, PlasticTableIsReadAndChecked) {
   EXPECT_DOUBLE_EQ(curve[1].first, 300.0);
   EXPECT_DOUBLE_EQ(curve[1].second, 0.05);
   for (const std::string& bad : {std::string("\n250., 0.01"), std::string("\n250., 0.\n260., 0."),
-                                 std::string(", HARDENING=KINEMATIC\n250., 0."),
+                                 std::string(", HARDENING=FOO\n250., 0."),
                                  std::string("\n250., 0., 20.\n260., 0.1, 100."),
                                  std::string("\n250., 0.\n0., 1e-9")}) {  // steep softening
     try {
