@@ -82,6 +82,12 @@ void resolve_connectors(DeckState& state) {
     if (c.nodes[0] == c.nodes[1])
       throw InputError(raw.where, "*ELEMENT",
                        "element " + std::to_string(raw.label) + " joins a node to itself");
+    if (c.kind == Connector::Kind::Spring &&
+        model.mesh.coords.row(c.nodes[0]) == model.mesh.coords.row(c.nodes[1]))
+      throw InputError(raw.where, "*ELEMENT",
+                       "spring element " + std::to_string(raw.label) +
+                           " has zero length: its direction is undefined (SPRINGA acts along "
+                           "the line between its nodes)");
     model.connectors.push_back(c);
   }
   std::vector<char> has_law(model.connectors.size(), 0);

@@ -56,6 +56,10 @@ std::vector<BadDeck> connector_bad_decks() {
        "node 77 of element 12 is not defined"},
       {"connector one node", plus("*ELEMENT, TYPE=SPRINGA\n12, 1\n"), 34, "*ELEMENT",
        "expected at least 3 field(s)"},
+      {"spring of zero length",
+       plus(gap + "*SPRING, ELSET=EALL\n10.\n*NODE\n101, 3, 0, 0\n*ELEMENT, TYPE=SPRINGA, "
+                  "ELSET=EALL\n12, 100, 101\n"),
+       40, "*ELEMENT", "spring element 12 has zero length"},
   };
 }
 
