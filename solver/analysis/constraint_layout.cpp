@@ -6,7 +6,7 @@ namespace kontakt::analysis {
 
 bool ConstraintLayout::update(const model::Model& model, const model::Step& step,
                               linsolve::LinearSolver& solver, int threads) {
-  auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries);
+  auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries, step.element_active);
   if (dofs_ && dofs_->same_structure(*step_dofs)) return false;
   dofs_ = std::move(step_dofs);
   check_bodies_supported(model, *dofs_);

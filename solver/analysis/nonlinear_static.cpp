@@ -131,6 +131,7 @@ class NonlinearStatic {
       warn(sc.number, step.where.file + ":" + std::to_string(step.where.line) +
                           ": *STATIC has no data line: one increment of 1 over a step time of 1");
     layout_.update(model_, step, *solver_, threads_);
+    change_elements(step);
     contact_.begin_step(step);
     require_loads_reach_elements(
         model_, layout_.dofs(),
@@ -153,6 +154,21 @@ class NonlinearStatic {
     dT_prev_ = sc.dT_end;
     last_q_bar_ = convergence_->last_force_average();
     total_time_start_ += sc.period;
+  }
+
+  /// *MODEL CHANGE, TYPE=ELEMENT: the step's active elements; one added back in this step is
+  /// strain-free in the converged configuration it returns in.
+  void change_elements(const model::Step& step) {
+    const std::vector<char>& before = elements_.active;
+    const auto active = [](const std::vector<char>& flags, std::size_t e) {
+      return flags.empty() || flags[e];
+    };
+    if (before.empty() && step.element_active.empty()) return;
+    elements_.added_at.resize(model_.mesh.elements.size());
+    for (std::size_t e = 0; e < model_.mesh.elements.size(); ++e)
+      if (active(step.element_active, e) && !active(before, e))
+        elements_.added_at[e] = element_displacements(model_.mesh.elements[e], u_);
+    elements_.active = step.element_active;
   }
 
   /// External forces at step time t on the configuration u: loads without amplitude ramp from
@@ -480,6 +496,7 @@ class NonlinearStatic {
 
     output::Frame frame = converged_frame(model_, u_, a.ev);
     layout_.dofs().add_constraint_forces(frame.RF);
+    frame.element_active = sc.step->element_active;
     frame.T = nodal_temperatures(model_, a.dT);
     frame.step = sc.number;
     frame.increment = increment_no;
@@ -610,6 +627,8 @@ class NonlinearStatic {
 
 bool needs_newton(const model::Model& model) {
   if (!model.contact_pairs.empty() || !model.connectors.empty()) return true;
+  for (const auto& step : model.steps)
+    if (!step.element_active.empty()) return true;  // *MODEL CHANGE, TYPE=ELEMENT
   for (const auto& step : model.steps)
     if (step.nlgeom) return true;
   for (const auto& el : model.mesh.elements)

@@ -17,8 +17,14 @@ namespace {
 /// materials, linear elasticity otherwise (whose constant stiffness is skipped when `K` is null).
 void element_response(const model::Model& model, const model::Element& el, bool nlgeom,
                       const VecX& u, const VecX& dT, const element::ElementState& committed,
-                      MatX* K, VecX& f_int, ElementOutput& out, element::ElementState& trial) {
-  const MatX3 X = element_coords(model, el), ue = element_displacements(el, u);
+                      const MatX3& added_at, MatX* K, VecX& f_int, ElementOutput& out,
+                      element::ElementState& trial) {
+  // An element added back starts strain-free where it was added: its reference moves there.
+  MatX3 X = element_coords(model, el), ue = element_displacements(el, u);
+  if (added_at.size()) {
+    X += added_at;
+    ue -= added_at;
+  }
   const VecX dTe = element_values(el, dT);
   const auto mat = element_material(model, el);
   const bool plastic = !element_material_def(model, el).plastic.empty();
@@ -88,6 +94,23 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
   Evaluation ev;
   std::vector<VecX> f_el(elements.size());
   ev.outputs.resize(elements.size());
+  const MatX3 none;
+  const auto is_active = [&](int e) {
+    return states.active.empty() || states.active[static_cast<std::size_t>(e)];
+  };
+  const auto added_at = [&](int e) -> const MatX3& {
+    return states.added_at.empty() ? none : states.added_at[static_cast<std::size_t>(e)];
+  };
+  // A removed element: no stiffness, no force, zero point values.
+  const auto removed = [&](const model::Element& el, MatX* K, VecX& f_int, ElementOutput& out,
+                           VecX& f) {
+    const int n = 3 * static_cast<int>(el.nodes.size());
+    const Index nip = element::traits(el.type).n_ip;
+    if (K) K->setZero(n, n);
+    f_int = VecX::Zero(n);
+    f = f_int;
+    out = {MatX6::Zero(nip, 6), MatX6::Zero(nip, 6), VecX::Zero(nip), VecX()};
+  };
   const bool reuse = cache.usable && cache.generation == plan.generation &&
                      (prescribed_step.size() == 0 || prescribed_step.isZero());
   if (reuse) {
@@ -96,9 +119,10 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
         model, plan,
         [&](int e, VecX& f) {
           const auto& el = elements[e];
+          if (!is_active(e)) return removed(el, nullptr, f_el[e], ev.outputs[e], f);
           naming_element(el, [&] {
-            element_response(model, el, nlgeom, u, dT, committed[e], nullptr, f_el[e],
-                             ev.outputs[e], trial[e]);
+            element_response(model, el, nlgeom, u, dT, committed[e], added_at(e), nullptr,
+                             f_el[e], ev.outputs[e], trial[e]);
           });
           f = -f_el[e];
         },
@@ -109,9 +133,10 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
         model, plan, prescribed_step,
         [&](int e, MatX& K, VecX& f) {
           const auto& el = elements[e];
+          if (!is_active(e)) return removed(el, &K, f_el[e], ev.outputs[e], f);
           naming_element(el, [&] {
-            element_response(model, el, nlgeom, u, dT, committed[e], &K, f_el[e], ev.outputs[e],
-                             trial[e]);
+            element_response(model, el, nlgeom, u, dT, committed[e], added_at(e), &K, f_el[e],
+                             ev.outputs[e], trial[e]);
           });
           f = -f_el[e];
         },

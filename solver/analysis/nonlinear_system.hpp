@@ -17,6 +17,11 @@ namespace kontakt::analysis {
 /// become the committed ones when the increment converges, and are dropped on a cutback.
 struct ElementStates {
   std::vector<element::ElementState> committed, trial;  ///< per element
+  /// The step's Step::element_active (empty: all), and per element the nodal displacements it
+  /// was added back at (*MODEL CHANGE, TYPE=ELEMENT, ADD), its strain-free configuration; empty
+  /// for the others. Both set at the start of each step.
+  std::vector<char> active;
+  std::vector<MatX3> added_at;
 
   /// Plastic points virgin, C3D8I mode amplitudes zero.
   explicit ElementStates(const model::Model& model);

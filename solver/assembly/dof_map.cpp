@@ -16,11 +16,13 @@ const char* component_name(int c) { return c == 0 ? "x" : c == 1 ? "y" : "z"; }
 
 /// Dofs of nodes that belong to at least one element or connector: the others carry no
 /// stiffness.
-std::vector<char> attached_dofs(const model::Model& model) {
+std::vector<char> attached_dofs(const model::Model& model, const std::vector<char>& active) {
   std::vector<char> attached(3 * static_cast<std::size_t>(model.n_nodes()), 0);
-  for (const auto& el : model.mesh.elements)
-    for (int n : el.nodes)
+  for (std::size_t e = 0; e < model.mesh.elements.size(); ++e) {
+    if (!active.empty() && !active[e]) continue;
+    for (int n : model.mesh.elements[e].nodes)
       for (int c = 0; c < 3; ++c) attached[3 * n + c] = 1;
+  }
   for (const auto& connector : model.connectors)
     for (int n : connector.nodes)
       for (int c = 0; c < 3; ++c) attached[3 * n + c] = 1;
@@ -44,11 +46,12 @@ std::vector<DofTerm> merged(std::vector<DofTerm> terms) {
 
 }  // namespace
 
-DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries)
+DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries,
+               const std::vector<char>& active_elements)
     : model_(&model) {
   const int n = 3 * model.n_nodes();
   frames_ = model.local_frames;
-  const std::vector<char> attached = attached_dofs(model);
+  const std::vector<char> attached = attached_dofs(model, active_elements);
   std::vector<Kind> kind(n);
   for (int d = 0; d < n; ++d) kind[d] = attached[d] ? Kind::Free : Kind::Inactive;
 

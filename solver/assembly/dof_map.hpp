@@ -36,7 +36,10 @@ class DofMap {
   /// Builds the map for one step's constraints. Throws InputError for contradictory
   /// constraints (a dof prescribed twice with different values is not an error: the last
   /// wins, as in ccx; a dependent dof that is also prescribed, or a cyclic equation chain, is).
-  DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries);
+  /// `active_elements` (Step::element_active; empty: all) leaves the dofs that only removed
+  /// elements hold inactive.
+  DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries,
+         const std::vector<char>& active_elements = {});
 
   int n_dofs() const { return static_cast<int>(start_.size()) - 1; }
   int n_equations() const { return n_equations_; }

@@ -134,6 +134,7 @@ struct ActiveLoads {
   std::vector<RawSection> section_changes;
   /// *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE: indices into DeckState::contact_pairs.
   std::set<int> removed_contact_pairs;
+  std::set<int> removed_elements;  ///< internal element indices (*MODEL CHANGE, TYPE=ELEMENT)
   /// *CHANGE SURFACE BEHAVIOR: interaction index -> the behavior that replaces the model's one
   /// (defaults resolved at its card).
   std::map<int, model::SurfaceBehavior> behavior_changes;
@@ -197,6 +198,8 @@ struct DeckState {
   std::optional<StepProgress> open_step;
   bool any_step_seen = false;
   bool nonlinear_mpc = false;  ///< an *MPC was read: every step runs with NLGEOM (ccx)
+  /// The first *MODEL CHANGE, TYPE=ELEMENT, when there is one.
+  std::optional<SourceLoc> element_change_where;
   ActiveLoads active;
 
   int intern(const SourceLoc& where) {

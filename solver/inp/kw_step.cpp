@@ -151,6 +151,10 @@ void handle_end_step(const Record& record, DeckState& state) {
   step.contact_files = with_frequency(active.contact_files, active.output_frequency);
   step.contact_pair_active.assign(state.contact_pairs.size(), 1);
   for (int p : active.removed_contact_pairs) step.contact_pair_active[static_cast<std::size_t>(p)] = 0;
+  if (!active.removed_elements.empty()) {
+    step.element_active.assign(state.model.mesh.elements.size(), 1);
+    for (int e : active.removed_elements) step.element_active[static_cast<std::size_t>(e)] = 0;
+  }
   state.step_friction_changes.push_back(active.friction_changes);
   state.step_section_changes.push_back(active.section_changes);
   state.step_behavior_changes.push_back(active.behavior_changes);

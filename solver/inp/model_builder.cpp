@@ -238,6 +238,27 @@ void require_deformation_plasticity_support(const model::Model& model, const mod
   }
 }
 
+/// *MODEL CHANGE, TYPE=ELEMENT in models whose elements carry nothing but their displacements:
+/// no contact, ties, plastic points or C3D8I modes (their states at removal are not defined
+/// here), no plane elements or pre-tension cuts (which renumber or copy nodes).
+void require_element_change_support(const DeckState& state) {
+  if (!state.element_change_where) return;
+  const model::Model& model = state.model;
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(*state.element_change_where, "*MODEL CHANGE",
+                     "TYPE=ELEMENT is not supported " + why);
+  };
+  if (!model.contact_pairs.empty() || !model.ties.empty()) refuse("with contact or *TIE");
+  if (!model.pretension_sections.empty()) refuse("with *PRE-TENSION SECTION");
+  for (const model::Element& el : model.mesh.elements) {
+    if (el.planar != model::Planar::None) refuse("with plane or axisymmetric elements");
+    if (el.type == element::ElementType::C3D8I) refuse("with C3D8I elements");
+    const model::SolidSection& section = model.sections[static_cast<std::size_t>(el.section)];
+    if (!model.materials[static_cast<std::size_t>(section.material)].plastic.empty())
+      refuse("with *PLASTIC materials");
+  }
+}
+
 /// KINEMATIC and COMBINED hardening run in the finite-strain kernels (NLGEOM steps; ccx switches
 /// NLGEOM on for *PLASTIC anyway); COMBINED needs its *CYCLIC HARDENING curve, which nothing
 /// else reads.
@@ -505,6 +526,7 @@ model::Model finish_model(DeckState& state) {
   resolve_connectors(state);
   resolve_couplings(state);
   resolve_section_changes(state);
+  require_element_change_support(state);
   if (!state.initial_temperatures.empty()) {
     model.initial_temperatures = VecX::Zero(model.n_nodes());
     for (const auto& [node, value] : state.initial_temperatures) {

@@ -305,6 +305,10 @@ struct Step {
   /// CONTACT PAIR, REMOVE took it out in this or an earlier step (and no ADD brought it back).
   /// Pairs beyond the vector (TIED pairs of *TIE) are active.
   std::vector<char> contact_pair_active;
+  /// Per element: 0 where *MODEL CHANGE, TYPE=ELEMENT, REMOVE took it out in this or an earlier
+  /// step (and no ADD brought it back); empty: every element is active. An element added back
+  /// is strain-free in the configuration of the step it returns in (ccx).
+  std::vector<char> element_active;
   /// Per interaction: the *SURFACE BEHAVIOR in force in this step (the interaction's own, as
   /// changed by *CHANGE SURFACE BEHAVIOR in this or an earlier step).
   std::vector<SurfaceBehavior> interaction_behavior;

@@ -163,7 +163,8 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
                                            mesh.element_index, largest_element_label_, [&](int e) {
                                              return mesh.elements[static_cast<std::size_t>(e)].id;
                                            }))
-    if (e >= 0) elems.push_back(e);
+    if (e >= 0 && (f.element_active.empty() || f.element_active[static_cast<std::size_t>(e)]))
+      elems.push_back(e);
   const auto need_ip = [&](Index rows) {
     KONTAKT_REQUIRE(f.ip_offset.size() == static_cast<std::size_t>(model_.n_elements()) + 1,
                     "DatWriter: frame ip_offset has wrong size");

@@ -69,6 +69,9 @@ struct Frame {
   VecX PEEQ_nodal;
   /// Nodal temperatures at the frame's time (n_nodes); empty for a model without temperatures.
   VecX T;
+  /// Per element: 0 for one *MODEL CHANGE removed (the .dat prints no rows for it, as ccx);
+  /// empty: all elements are in the model.
+  std::vector<char> element_active;
 
   /// Contact state; both empty for models without contact pairs.
   std::vector<ContactPointRecord> contact_points;

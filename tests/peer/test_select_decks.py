@@ -84,14 +84,18 @@ class SelectDecks(unittest.TestCase):
                              "*EXPANSION, ZERO=20\n1.2E-5, 0\n1.4E-5, 100\n")
         self.assertIsNone(exclusion_reason(self.deck(table)))
 
-    def test_nonlinear_set_admits_isotropic_plasticity_and_c3d8i(self):
+    def test_nonlinear_set_admits_plasticity_and_c3d8i(self):
         nl = GOOD.replace("*STEP\n", "*STEP, NLGEOM\n").replace("TYPE=C3D8,", "TYPE=C3D8I,")
         plastic = nl.replace("210000, 0.3\n", "210000, 0.3\n*PLASTIC\n800, 0, 20\n900, 0.1, 20\n")
         self.assertIsNone(exclusion_reason(self.deck(plastic), nlgeom=True))
         by_temperature = plastic.replace("900, 0.1, 20\n", "900, 0.1, 20\n700, 0, 500\n")
         self.assertIsNone(exclusion_reason(self.deck(by_temperature), nlgeom=True))
+        for rule in ("KINEMATIC", "COMBINED"):
+            hardened = plastic.replace("*PLASTIC\n", f"*PLASTIC, HARDENING={rule}\n", 1)
+            self.assertIsNone(exclusion_reason(self.deck(hardened), nlgeom=True))
         cases = {
-            ("*PLASTIC\n", "*PLASTIC, HARDENING=KINEMATIC\n"): "*PLASTIC, HARDENING=KINEMATIC",
+            ("*PLASTIC\n", "*PLASTIC, HARDENING=JOHNSON COOK\n"):
+                "*PLASTIC, HARDENING=JOHNSON COOK",
         }
         for (old, new), reason in cases.items():
             with self.subTest(reason=reason):
@@ -109,6 +113,30 @@ class SelectDecks(unittest.TestCase):
         ogden = unloaded.replace("NEO HOOKE", "OGDEN, N=1")
         self.assertEqual(exclusion_reason(self.deck(ogden), nlgeom=True), "*HYPERELASTIC, OGDEN")
         self.assertEqual(exclusion_reason(self.deck(unloaded)), "keyword *HYPERELASTIC")
+
+    def test_constraints_and_connectors(self):
+        model_end = "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n"
+        nl = GOOD.replace("*STEP\n", "*STEP, NLGEOM\n")
+        for card, linear, nonlinear in [
+                ("*MPC\nMEANROT, 1, 1, 1, 2, 2, 2, 9\n", None, "no NLGEOM step"),
+                ("*MPC\nPLANE, 1, 2, 3, 4\n", "*MPC PLANE (ccx switches NLGEOM on)", None),
+                ("*MPC\nDIST, 1, 1, 1, 2, 2, 2, 9\n", "*MPC DIST", "*MPC DIST"),
+                ("*RIGID BODY, NSET=NALL\n", "*RIGID BODY without REF NODE= and ROT NODE=",
+                 "*RIGID BODY without REF NODE= and ROT NODE="),
+                ("*RIGID BODY, NSET=NALL, REF NODE=9, ROT NODE=10\n", None, "no NLGEOM step"),
+                ("*ELEMENT, TYPE=SPRINGA, ELSET=S\n2, 1, 9\n*SPRING, ELSET=S\n\n10.\n", None,
+                 "no NLGEOM step")]:
+            with self.subTest(card=card):
+                text = GOOD.replace(model_end, model_end + card)
+                self.assertEqual(exclusion_reason(self.deck(text)), linear)
+                if nonlinear != "no NLGEOM step":
+                    text = nl.replace(model_end, model_end + card)
+                    self.assertEqual(exclusion_reason(self.deck(text), nlgeom=True), nonlinear)
+        loose = GOOD.replace("*STATIC\n", "*STATIC\n*CONTROLS, PARAMETERS=FIELD\n0.25, 0.25\n")
+        self.assertEqual(exclusion_reason(self.deck(loose)),
+                         "*CONTROLS, PARAMETERS=FIELD with R_n or C_n above 0.1")
+        tight = GOOD.replace("*STATIC\n", "*STATIC\n*CONTROLS, PARAMETERS=FIELD\n1e-8, 1e-8\n")
+        self.assertIsNone(exclusion_reason(self.deck(tight)))
 
     def test_nothing_printed(self):
         text = GOOD.replace("*NODE PRINT, NSET=NALL\nU, RF\n*EL PRINT, ELSET=EALL\nS, E\n", "")

@@ -154,7 +154,7 @@ std::vector<BadDeck> contact_bad_decks() {
       {"model change of elements",
        surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
                      "*MODEL CHANGE, TYPE=ELEMENT, REMOVE\n1\n*END STEP\n"),
-       40, "*MODEL CHANGE", "TYPE=ELEMENT (deactivating and activating elements) is not supported"},
+       40, "*MODEL CHANGE", "TYPE=ELEMENT is not supported with contact or *TIE"},
       {"model change without type",
        surfaces_plus(si + s2s + "\nSLAVE, MASTER\n" + step +
                      "*MODEL CHANGE, REMOVE\nSLAVE, MASTER\n*END STEP\n"),

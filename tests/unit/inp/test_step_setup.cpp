@@ -15,7 +15,21 @@ std::vector<BadDeck> step_setup_bad_decks() {
   const auto plus = [](const std::string& tail) { return two_cubes_model() + tail; };
   const std::string points = "*TIME POINTS, NAME=T1\n.2, .5\n";  // lines 27, 28
   const std::string step = "*STEP, NLGEOM\n*STATIC\n.1, 1.\n";    // lines 29-31
+  const std::string remove = "*MODEL CHANGE, TYPE=ELEMENT, REMOVE\n";  // line 30
   return {
+      {"model change of an unknown element", plus(step + remove + "7\n"), 31, "*MODEL CHANGE",
+       "element 7 is not defined"},
+      {"model change of an unknown set", plus(step + remove + "NOPE\n"), 31, "*MODEL CHANGE",
+       "element set NOPE is not defined"},
+      {"model change without elements", plus(step + remove), 30, "*MODEL CHANGE",
+       "expected at least 1 data line"},
+      {"model change of plastic elements",
+       [&] {
+         std::string deck = two_cubes_model();
+         deck.insert(deck.find("*SOLID SECTION"), "*PLASTIC\n800., 0.\n");
+         return deck + "*STEP, NLGEOM\n*STATIC\n.1, 1.\n" + remove + "2\n*END STEP\n";
+       }(),
+       32, "*MODEL CHANGE", "TYPE=ELEMENT is not supported with *PLASTIC materials"},
       {"time points without name", plus("*TIME POINTS\n.2\n"), 27, "*TIME POINTS",
        "NAME= is required"},
       {"time points decreasing", plus("*TIME POINTS, NAME=T\n.2, .5\n.4\n"), 29,
@@ -60,6 +74,20 @@ std::vector<BadDeck> step_setup_bad_decks() {
 }  // namespace test
 
 namespace {
+
+TEST(inpStepSetup, ModelChangeOfElementsHoldsFromItsStepOn) {
+  const model::Model m = read_deck_text(
+      test::two_cubes_model() +
+      "*ELSET, ELSET=SECOND\n2\n*STEP\n*STATIC\n*END STEP\n"
+      "*STEP\n*STATIC\n*MODEL CHANGE, TYPE=ELEMENT, REMOVE\nSECOND\n*END STEP\n"
+      "*STEP\n*STATIC\n*END STEP\n"
+      "*STEP\n*STATIC\n*MODEL CHANGE, TYPE=ELEMENT, ADD\n2,\n*END STEP\n");
+  ASSERT_EQ(m.steps.size(), 4u);
+  EXPECT_TRUE(m.steps[0].element_active.empty());
+  EXPECT_EQ(m.steps[1].element_active, (std::vector<char>{1, 0}));
+  EXPECT_EQ(m.steps[2].element_active, (std::vector<char>{1, 0}));  // until added back
+  EXPECT_TRUE(m.steps[3].element_active.empty());
+}
 
 TEST(inpTimePoints, ReadsListsAndGeneratedSequences) {
   const model::Model m = read_deck_text(test::two_cubes_model() + R"(*TIME POINTS, NAME=T1
