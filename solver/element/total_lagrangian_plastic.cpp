@@ -34,15 +34,12 @@ Vec6 hourglass_modulus_gradient(const LinearElastic& mat, const material::Harden
 material::J2FiniteResult kinematic_point(const LinearElastic& m, const material::HardeningTable& curve,
                                          const material::HardeningTable* cyclic,
                                          const material::J2State& committed, const Mat3& C) {
-  const material::J2KinematicState from{committed.plastic_strain,
-                                        committed.equivalent_plastic_strain,
-                                        committed.back_stress};
   const material::J2FiniteKinematicResult k =
-      material::j2_finite_kinematic(m.young, m.poisson, curve, cyclic, from, C);
+      material::j2_finite_kinematic(m.young, m.poisson, curve, cyclic, committed, C);
   material::J2FiniteResult r;
   r.stress = k.stress;
   r.tangent = r.kirchhoff_tangent = k.tangent;
-  r.state = {k.state.plastic_strain, k.state.equivalent_plastic_strain, k.state.back_stress};
+  r.state = k.state;
   r.yielded = k.yielded;
   r.delta_alpha = k.delta_alpha;
   return r;

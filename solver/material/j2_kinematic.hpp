@@ -19,11 +19,8 @@
 
 namespace kontakt::material {
 
-struct J2KinematicState {
-  Vec6 plastic_strain = Vec6::Zero();  ///< tensor shear components, trace 0
-  Real equivalent_plastic_strain = 0;
-  Vec6 back_stress = Vec6::Zero();     ///< deviatoric, stress components
-};
+/// The isotropic model's point state, its back stress in use (deviatoric, stress components).
+using J2KinematicState = J2State;
 
 struct J2KinematicResult {
   Vec6 stress = Vec6::Zero();
