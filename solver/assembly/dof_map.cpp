@@ -140,6 +140,11 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
   // resolved recursively (chains of equations), with cycle detection.
   std::vector<std::vector<DofTerm>> expr(n);
   std::vector<char> state(n, 0);  // 0 unvisited, 1 in progress, 2 done
+  // Rows that relinearise() updates: nonlinear constraints' and those following them.
+  std::vector<char>& moving = moving_dof_;
+  moving.assign(n, 0);
+  nonlinear_rows_.clear();
+  follower_rows_.clear();
   auto resolve = [&](auto&& self, int d) -> const std::vector<DofTerm>& {
     if (state[d] == 2) return expr[d];
     if (state[d] == 1)
@@ -164,8 +169,7 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
             throw InputError(c.where, c.keyword,
                              "the constraint does not depend on its dependent dof (" +
                                  describe(model, d) + ") in the undeformed configuration");
-          NonlinearRow row{.dof = d, .constraint = nl->second, .other_dofs = {}, .elementless = {},
-                           .constant = 0};
+          NonlinearRow row{.dof = d, .constraint = nl->second, .other_dofs = {}, .elementless = {}};
           for (std::size_t k = 1; k < cdofs.size(); ++k) {
             const int other = 3 * cdofs[k].node + cdofs[k].component;
             if (kind[other] == Kind::Dependent)
@@ -180,6 +184,7 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
             row.elementless.push_back(!attached[other]);
           }
           nonlinear_rows_.push_back(std::move(row));
+          moving[d] = 1;
           expr[d] = std::move(out);
           state[d] = 2;
           return expr[d];
@@ -188,15 +193,25 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
         const Real lead = eq.terms.front().coef;
         if (lead == 0)
           throw InputError(eq.where, eq.keyword, "the first coefficient must not be zero");
+        FollowerRow follower{.dof = d, .sources = {}};
+        bool follows = false;
         for (std::size_t k = 1; k < eq.terms.size(); ++k) {
           const int other = 3 * eq.terms[k].node + eq.terms[k].dof;
-          if (nonlinear_of.contains(other))
-            throw InputError(eq.where, eq.keyword,
-                             describe(model, other) +
-                                 " is the dependent dof of a nonlinear constraint (*RIGID BODY "
-                                 "or *MPC); it cannot be a term of an equation");
+          const Real c = -eq.terms[k].coef / lead;
           for (const DofTerm& t : self(self, other))
-            out.push_back({t.index, -eq.terms[k].coef / lead * t.coef, t.is_prescribed});
+            out.push_back({t.index, c * t.coef, t.is_prescribed});
+          follower.sources.emplace_back(other, c);
+          follows |= moving[other] != 0;
+        }
+        if (follows) {  // a term moves with a nonlinear constraint: so does this row
+          for (const auto& [dof, c] : follower.sources)
+            if (frames_.contains(dof / 3) || frames_.contains(d / 3))
+              throw InputError(eq.where, eq.keyword,
+                               "this equation follows a nonlinear constraint (*RIGID BODY or "
+                               "*MPC) and has a term at a node with a *TRANSFORM "
+                               "(" + describe_unknown(model, dof) + "): not supported");
+          follower_rows_.push_back(std::move(follower));
+          moving[d] = 1;
         }
         break;
       }
@@ -227,8 +242,7 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     terms_.insert(terms_.end(), e.begin(), e.end());
     start_[d + 1] = static_cast<int>(terms_.size());
   }
-  nonlinear_dof_.assign(n, 0);
-  for (const NonlinearRow& r : nonlinear_rows_) nonlinear_dof_[r.dof] = 1;
+  row_constant_.assign(n, 0);
 }
 
 void DofMap::relinearise(VecX& u) {
@@ -257,7 +271,27 @@ void DofMap::relinearise(VecX& u) {
       terms[k].coef = coef;
       constant -= coef * u[row.other_dofs[k]];
     }
-    row.constant = constant;
+    row_constant_[d] = constant;
+  }
+  // Rows following the constraints, dependencies first: each the combination of its sources'
+  // current rows (sums of the same unknown collected in the row's own merged terms).
+  for (const FollowerRow& row : follower_rows_) {
+    DofTerm* begin = terms_.data() + start_[row.dof];
+    DofTerm* end = terms_.data() + start_[row.dof + 1];
+    for (DofTerm* t = begin; t != end; ++t) t->coef = 0;
+    Real constant = 0, value = 0;
+    for (const auto& [source, c] : row.sources) {
+      for (auto t = terms_begin(source); t != terms_end(source); ++t) {
+        DofTerm* target = std::find_if(begin, end, [&](const DofTerm& m) {
+          return m.index == t->index && m.is_prescribed == t->is_prescribed;
+        });
+        target->coef += c * t->coef;
+      }
+      constant += c * row_constant_[source];
+      value += c * u[source];
+    }
+    row_constant_[row.dof] = constant;
+    u[row.dof] = value;
   }
 }
 
@@ -292,7 +326,7 @@ VecX DofMap::expand(const VecX& x, const VecX& prescribed_values) const {
       v += t->coef * (t->is_prescribed ? prescribed_values[t->index] : x[t->index]);
     u[d] = v;
   }
-  for (const NonlinearRow& row : nonlinear_rows_) u[row.dof] += row.constant;
+  if (!row_constant_.empty()) u += Eigen::Map<const VecX>(row_constant_.data(), n_dofs());
   return u;
 }
 
@@ -308,12 +342,12 @@ void DofMap::add_constraint_forces(MatX3& nodal_forces) const {
 
 bool DofMap::same_structure(const DofMap& other) const {
   if (start_ != other.start_ || terms_.size() != other.terms_.size()) return false;
-  if (nonlinear_dof_ != other.nonlinear_dof_) return false;
+  if (moving_dof_ != other.moving_dof_) return false;
   for (int d = 0; d < n_dofs(); ++d)
     for (int k = start_[d]; k < start_[d + 1]; ++k)
       if (terms_[k].index != other.terms_[k].index ||
           terms_[k].is_prescribed != other.terms_[k].is_prescribed ||
-          (!nonlinear_dof_[d] && terms_[k].coef != other.terms_[k].coef))
+          (!moving_dof_[d] && terms_[k].coef != other.terms_[k].coef))
         return false;
   return true;
 }

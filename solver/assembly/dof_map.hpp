@@ -5,7 +5,10 @@
 //   prescribed  u_d = value of a *BOUNDARY                   (eliminated, reaction reported)
 //   dependent   u_d = sum_k c_k * (free or prescribed dof)   (*EQUATION, first term dependent)
 //               + h_d                                        (h_d, c_k of a nonlinear constraint
-//                                                             are its linearisation: relinearise)
+//                                                             are its linearisation: relinearise;
+//                                                             so are an equation's whose terms
+//                                                             follow one, e.g. a 2D node's copies
+//                                                             on a rigid body)
 //   inactive    u_d = 0                                      (node not attached to any element)
 // so u = T x + g, with T and g stored row by row. Element matrices are reduced as T^T K T.
 //
@@ -98,11 +101,18 @@ class DofMap {
     int constraint = 0;               ///< into Model::nonlinear_constraints
     std::vector<int> other_dofs;      ///< global dofs of the terms
     std::vector<char> elementless;    ///< per other dof: its node belongs to no element
-    Real constant = 0;                ///< h_d
+  };
+  /// The row of an equation's dependent dof whose terms include a moving row (a nonlinear
+  /// constraint's dependent or another follower): u_d = sum c * u_source.
+  struct FollowerRow {
+    int dof = 0;
+    std::vector<std::pair<int, Real>> sources;  ///< (global dof, coefficient)
   };
   const model::Model* model_ = nullptr;
   std::vector<NonlinearRow> nonlinear_rows_;
-  std::vector<char> nonlinear_dof_;   ///< per dof: the dependent dof of a nonlinear constraint
+  std::vector<FollowerRow> follower_rows_;  ///< in the order their rows depend on each other
+  std::vector<char> moving_dof_;      ///< per dof: a nonlinear or follower row
+  std::vector<Real> row_constant_;    ///< per dof: h_d of its current linearisation
   std::vector<int> start_;
   std::vector<DofTerm> terms_;
   std::vector<int> prescribed_slot_;

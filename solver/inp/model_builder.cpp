@@ -175,6 +175,31 @@ void resolve_connectivity(DeckState& state) {
   }
 }
 
+/// ccx 2.20 drops the labels of a node set beyond the deck's largest node label, with a
+/// warning (scheibe names node 29, a node of its 2D element's expansion): so does Kontakt. A
+/// missing label below the largest stays an error (ccx would print it as a node at rest).
+void drop_nodes_beyond_the_mesh(DeckState& state) {
+  int largest = 0;
+  for (const auto& entry : state.model.mesh.node_index) largest = std::max(largest, entry.first);
+  for (auto& [name, set] : state.node_sets) {
+    std::vector<int> labels, line_ids;
+    for (std::size_t i = 0; i < set.labels.size(); ++i) {
+      if (set.labels[i] <= largest) {
+        labels.push_back(set.labels[i]);
+        line_ids.push_back(set.line_ids[i]);
+        continue;
+      }
+      state.warn(state.line_locs[static_cast<std::size_t>(set.line_ids[i])], "*NSET",
+                 "node " + std::to_string(set.labels[i]) + " of set " + name +
+                     " is beyond the largest node label " + std::to_string(largest) +
+                     ": left out of the set (as ccx does)");
+    }
+    set.labels = std::move(labels);
+    set.line_ids = std::move(line_ids);
+    std::erase_if(set.sequence, [&](const model::LabelRange& r) { return r.first > largest; });
+  }
+}
+
 void build_sets(DeckState& state) {
   for (const auto& [name, set] : state.node_sets) {
     state.model.node_sets[name] =
@@ -511,6 +536,7 @@ model::Model finish_model(DeckState& state) {
     model.mesh.coords.row(static_cast<Eigen::Index>(i)) = state.coords[i].transpose();
   }
   resolve_connectivity(state);
+  drop_nodes_beyond_the_mesh(state);
   build_sets(state);
   for (const auto& [name, raw] : state.surfaces) {
     model.surfaces[name] = build_surface(state, name, raw);

@@ -150,6 +150,10 @@ TEST(DofMap, RelinearisedConstraintsHoldExactlyAndTheirRowsAreTheDerivatives) {
       m.nonlinear_constraints.push_back(constraint(Kind::Rigid, {node, 12, 13}, c));
   m.nonlinear_constraints.push_back(constraint(Kind::Straight, {6, 1, 2}, 0, 2));
   m.nonlinear_constraints.push_back(constraint(Kind::Plane, {7, 0, 1, 2}, 0));
+  // Equations that follow the constraints (as the copies of a 2D node on a rigid body do),
+  // one through the other: 3y = 0.5 8x + 0.25 2y, then 4z = 2 3y - 9z + 1.5 6x.
+  m.equations.push_back({{{3, 1, 1.0}, {8, 0, -0.5}, {2, 1, -0.25}}, {"deck.inp", 9}});
+  m.equations.push_back({{{4, 2, 1.0}, {3, 1, -2.0}, {9, 2, 1.0}, {6, 0, -1.5}}, {"deck.inp", 10}});
   assembly::DofMap dofs(m, {{0, 0, 0}, {0, 1, 0}, {0, 2, 0}});
   ASSERT_TRUE(dofs.has_nonlinear_constraints());
   VecX u = random_displacements(14, 0.3, 5);
@@ -157,6 +161,8 @@ TEST(DofMap, RelinearisedConstraintsHoldExactlyAndTheirRowsAreTheDerivatives) {
   dofs.relinearise(u);
   for (const auto& c : m.nonlinear_constraints)
     EXPECT_NEAR(constraint_value(c, m.mesh.coords, u), 0, 1e-13);
+  EXPECT_NEAR(u[3 * 3 + 1], 0.5 * u[3 * 8] + 0.25 * u[3 * 2 + 1], 1e-15);
+  EXPECT_NEAR(u[3 * 4 + 2], 2 * u[3 * 3 + 1] - u[3 * 9 + 2] + 1.5 * u[3 * 6], 1e-15);
   // expand() of the unknowns of u gives u back.
   VecX x(dofs.n_equations()), g(dofs.n_prescribed());
   for (int eq = 0; eq < dofs.n_equations(); ++eq) x[eq] = u[dofs.equation_dof(eq)];

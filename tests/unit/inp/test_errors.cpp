@@ -36,7 +36,8 @@ std::vector<BadDeck> bad_decks() {
        "*ELEMENT", "needs 8 node numbers"},
       {"undefined set in nset", model_plus("*NSET, NSET=X\n1, NOPE\n"), 28, "*NSET",
        "NOPE is not defined"},
-      {"set member undefined", model_plus("*NSET, NSET=X\n1, 77\n"), 28, "*NSET",
+      {"set member undefined",  // below the largest label: ccx would print a node at rest
+       model_plus("*NODE\n100, 3, 3, 3\n*NSET, NSET=X\n1, 77\n"), 30, "*NSET",
        "node 77 of set X"},
       {"element without section",
        model_plus("*ELEMENT, TYPE=C3D4\n3, 1, 2, 3, 5\n"), 28, "*ELEMENT",

@@ -146,7 +146,7 @@ TEST(inpMesh, AGenerateRangeCostsWhatTheMeshHasNotWhatItNames) {
 
 TEST(inpMesh, AListedLabelWithoutANodeIsAnErrorEvenBesideARangeThatNamesIt) {
   std::string deck = test::two_cubes_model();
-  deck += "*NSET, NSET=S, GENERATE\n1, 100\n*NSET, NSET=S\n99\n";
+  deck += "*NODE\n100, 5, 5, 5\n*NSET, NSET=S, GENERATE\n1, 100\n*NSET, NSET=S\n99\n";
   try {
     read_deck_text(deck);
     FAIL() << "no error";
@@ -154,6 +154,20 @@ TEST(inpMesh, AListedLabelWithoutANodeIsAnErrorEvenBesideARangeThatNamesIt) {
     EXPECT_NE(std::string(e.what()).find("node 99 of set S is not defined"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(inpMesh, ALabelBeyondTheLargestNodeLeavesTheSetWithAWarning) {
+  // As ccx 2.20 (scheibe names node 29 of its 2D element's expansion in a set to print).
+  std::string deck = test::two_cubes_model();
+  deck += "*NSET, NSET=S\n3, 13, 4\n*NSET, NSET=T, GENERATE\n10, 20\n";
+  const Model m = read_deck_text(deck, "d.inp");
+  EXPECT_EQ(labels_of_nodes(m, m.node_sets.at("S").nodes), (std::vector<int>{3, 4}));
+  EXPECT_EQ(labels_of_nodes(m, m.node_sets.at("T").nodes), (std::vector<int>{10, 11, 12}));
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("d.inp:"), std::string::npos) << m.warnings[0];
+  EXPECT_NE(m.warnings[0].find("node 13 of set S is beyond the largest node label 12"),
+            std::string::npos)
+      << m.warnings[0];
 }
 
 TEST(inpMesh, SetsSortByLabelNotDefinitionOrder) {
