@@ -18,6 +18,7 @@ void handle_surface(const Record&, DeckState&);
 void handle_material(const Record&, DeckState&);
 void handle_elastic(const Record&, DeckState&);
 void handle_hyperelastic(const Record&, DeckState&);
+void handle_membrane(const Record&, DeckState&);
 void handle_deformation_plasticity(const Record&, DeckState&);
 void handle_change_solid_section(const Record&, DeckState&);
 void handle_plastic(const Record&, DeckState&);

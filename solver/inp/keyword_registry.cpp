@@ -32,6 +32,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"CYCLICHARDENING", M, Mat, handle_cyclic_hardening},
     {"EXPANSION", M, Mat, handle_expansion},
     {"SOLIDSECTION", M, None, handle_solid_section},
+    {"MEMBRANE", M, None, handle_membrane},
     {"SURFACEINTERACTION", M, Inter, handle_surface_interaction},
     {"SURFACEBEHAVIOR", A, Inter, handle_surface_behavior},  // in a step: after *CHANGE ...
     {"FRICTION", A, Inter, handle_friction},  // in a step: after *CHANGE FRICTION

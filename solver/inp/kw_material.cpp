@@ -1,4 +1,5 @@
-// *MATERIAL, *ELASTIC, *HYPERELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION, *ORIENTATION.
+// *MATERIAL, *ELASTIC, *HYPERELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION, *MEMBRANE,
+// *ORIENTATION.
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -301,6 +302,18 @@ void handle_solid_section(const Record& record, DeckState& state) {
   const std::string orientation = name_value(record, "ORIENTATION").value_or("");
   state.sections.push_back(
       RawSection{elset, material, record.where, thickness, offset, orientation});
+}
+
+void handle_membrane(const Record& record, DeckState& state) {
+  // ccx 2.20 does not interpret *MEMBRANE (it skips the card with a warning): a card whose
+  // ELSET names no element is skipped here too (c3d6); one that would take elements is
+  // refused, as membrane elements are.
+  const std::string elset = remove_blanks(to_upper(required_value(record, "ELSET")));
+  if (state.element_sets.contains(elset))
+    fail(record, "membrane sections are not supported (element set " + elset + ")");
+  state.warn(record.where, record.keyword,
+             "element set " + elset + " is not defined: the card is ignored (as ccx 2.20 "
+             "ignores *MEMBRANE)");
 }
 
 void handle_change_solid_section(const Record& record, DeckState& state) {

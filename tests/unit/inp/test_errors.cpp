@@ -20,6 +20,8 @@ std::vector<BadDeck> bad_decks() {
       {"hyperelastic ogden unsupported",
        model_plus("*MATERIAL, NAME=P\n*ELASTIC\n1,0\n*HYPERELASTIC, OGDEN\n1,0\n"), 30,
        "*HYPERELASTIC", "OGDEN"},
+      {"membrane section on elements", model_plus("*MEMBRANE, ELSET=EALL, MATERIAL=M\n0.1\n"),
+       27, "*MEMBRANE", "membrane sections are not supported (element set EALL)"},
       {"frequency procedure", model_plus("*STEP\n*FREQUENCY\n10\n*END STEP\n"), 28,
        "*FREQUENCY", "not supported"},
       {"unsupported element", "*NODE\n1,0,0,0\n*ELEMENT, TYPE=S8R, ELSET=E\n1, 1\n", 3,

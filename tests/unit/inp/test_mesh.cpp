@@ -170,6 +170,16 @@ TEST(inpMesh, ALabelBeyondTheLargestNodeLeavesTheSetWithAWarning) {
       << m.warnings[0];
 }
 
+TEST(inpMesh, AMembraneCardWithoutElementsIsSkippedWithAWarning) {
+  // ccx 2.20 skips *MEMBRANE (c3d6 names an element set it never defines).
+  const Model m = read_deck_text(
+      test::two_cubes_model() + "*MEMBRANE, ELSET=P1, MATERIAL=M\n0.\n", "d.inp");
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("d.inp:27: *MEMBRANE: element set P1 is not defined"),
+            std::string::npos)
+      << m.warnings[0];
+}
+
 TEST(inpMesh, SetsSortByLabelNotDefinitionOrder) {
   const std::string deck =
       "*NODE, NSET=N\n20, 0,0,0\n10, 1,0,0\n30, 1,1,0\n40, 0,1,0\n"
