@@ -311,13 +311,6 @@ bool DofMap::is_free(int dof) const {
          !terms_[start_[dof]].is_prescribed && equation_dof_[terms_[start_[dof]].index] == dof;
 }
 
-Real DofMap::offset(int dof, const VecX& prescribed_values) const {
-  Real g = 0;
-  for (auto t = terms_begin(dof); t != terms_end(dof); ++t)
-    if (t->is_prescribed) g += t->coef * prescribed_values[t->index];
-  return g;
-}
-
 VecX DofMap::expand(const VecX& x, const VecX& prescribed_values) const {
   VecX u = VecX::Zero(n_dofs());
   for (int d = 0; d < n_dofs(); ++d) {

@@ -80,8 +80,6 @@ class DofMap {
   /// force and moment on the body, element nodes their element forces (measured: ccx 2.20's
   /// beamrb, beamrb2, beammrlin).
   void add_constraint_forces(MatX3& nodal_forces) const;
-  /// Value of u_d contributed by the prescribed values alone (g_d).
-  Real offset(int dof, const VecX& prescribed_values) const;
 
   /// Signature of the constraint structure: equal signatures give equal sparsity patterns.
   /// same_structure() compares the coefficients too, but not those of nonlinear constraints.
