@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <string>
 
 #include "contact/cyclic_symmetry.hpp"
@@ -258,10 +259,29 @@ model::Equation tie_equation(int slave, int dof, const SurfaceFace& face, const 
   return eq;
 }
 
+/// The dofs of plane and axisymmetric elements' expanded copies (equations from *ELEMENT)
+/// that follow another dof, u = c u_2D, keyed by global dof; the dofs those equations hold
+/// outright (u_z = 0 of plane strain) map to nothing.
+std::map<int, std::optional<model::EquationTerm>> expansion_followers(const model::Model& model) {
+  std::map<int, std::optional<model::EquationTerm>> out;
+  for (const model::Equation& eq : model.equations) {
+    if (eq.keyword != "*ELEMENT") continue;
+    const model::EquationTerm& lead = eq.terms.front();
+    std::optional<model::EquationTerm> followed;
+    if (eq.terms.size() == 2)
+      followed = model::EquationTerm{eq.terms[1].node, eq.terms[1].dof, -eq.terms[1].coef / lead.coef};
+    out[3 * lead.node + lead.dof] = followed;
+  }
+  return out;
+}
+
 int apply_ties(model::Model& model) {
   if (model.ties.empty()) return 0;
   const Real default_tol = default_tolerance(model);
   std::vector<char> constrained = constrained_dofs(model);
+  // A slave copy of a 2D node is tied through the dof it follows (its 2D node's, once for all
+  // its copies, which the expansion keeps moving alike); so ccx ties 2D parts (thread).
+  const std::map<int, std::optional<model::EquationTerm>> followers = expansion_followers(model);
   int n_tied = 0;
   for (const model::Tie& tie : model.ties) {
     if (tie.cyclic) {
@@ -276,6 +296,7 @@ int apply_ties(model::Model& model) {
     std::vector<int> missed;
     std::map<int, std::string> skipped;  // deck label -> directions left alone
     std::vector<Move> moves;
+    std::set<int> tied_dofs;  // by this tie, directly or through a copy
     // Every foot is found on the mesh as this tie found it; its slave nodes move afterwards.
     for (int node : make_contact_surface(model, model.surfaces.at(tie.slave)).nodes) {
       const Vec3 p = model.mesh.coords.row(node).transpose();
@@ -295,6 +316,22 @@ int apply_ties(model::Model& model) {
       bool tied = false;
       for (int dof = 0; dof < 3; ++dof) {
         char& taken = constrained[3 * static_cast<std::size_t>(node) + dof];
+        if (const auto copy = followers.find(3 * node + dof); copy != followers.end()) {
+          const std::optional<model::EquationTerm>& followed = copy->second;
+          if (!followed) continue;  // held by the expansion itself
+          const int followed_dof = 3 * followed->node + followed->dof;
+          if (tied_dofs.contains(followed_dof)) continue;  // through another copy
+          if (!constrained[static_cast<std::size_t>(followed_dof)]) {
+            model::Equation eq = tie_equation(node, dof, face, foot->xi, tie.where);
+            eq.terms.front() = *followed;
+            model.equations.push_back(std::move(eq));
+            constrained[static_cast<std::size_t>(followed_dof)] = 1;
+            tied_dofs.insert(followed_dof);
+            tied = true;
+            continue;
+          }
+        }
+        if (taken && tied_dofs.contains(3 * node + dof)) continue;  // through a copy
         if (taken) {
           std::string& directions = skipped[model.mesh.node_ids[static_cast<std::size_t>(node)]];
           directions += (directions.empty() ? "" : ", ") + std::string(direction(dof));
@@ -302,6 +339,7 @@ int apply_ties(model::Model& model) {
         }
         model.equations.push_back(tie_equation(node, dof, face, foot->xi, tie.where));
         taken = 1;
+        tied_dofs.insert(3 * node + dof);
         tied = true;
       }
       n_tied += tied;

@@ -160,10 +160,10 @@ void handle_el_print(const Record& record, DeckState& state) {
 }
 
 void handle_contact_print(const Record& record, DeckState& state) {
-  check_params(record, {"FREQUENCY", "TIMEPOINTS", "TOTALS", "NSET", "SLAVE", "MASTER"});
-  // ccx ignores NSET= here too (friction1 has it); SLAVE= and MASTER= select the surfaces of
-  // CF, CFN and CFS, which Kontakt does not print.
-  for (std::string_view name : {"NSET", "SLAVE", "MASTER"})
+  check_params(record, {"FREQUENCY", "TIMEPOINTS", "TOTALS", "NSET", "SET", "SLAVE", "MASTER"});
+  // ccx ignores NSET= and SET= here too (friction1, thread have them); SLAVE= and MASTER=
+  // select the surfaces of CF, CFN and CFS, which Kontakt does not print.
+  for (std::string_view name : {"NSET", "SET", "SLAVE", "MASTER"})
     if (has_param(record, name))
       state.warn(record.where, record.keyword, std::string(name) + "= ignored");
   model::ContactRequest request;

@@ -15,6 +15,7 @@
 
 #include "analysis/linear_static.hpp"
 #include "analysis/nonlinear_static.hpp"
+#include "contact/tie_constraints.hpp"
 #include "inp/read_deck.hpp"
 #include "model/plane_expansion.hpp"
 
@@ -235,5 +236,51 @@ TEST(PlaneElements, PlateOnARigidBodyTurnsRigidly) {
       EXPECT_NEAR((f.U.row(n).transpose() - expected).norm(), 0, 1e-10) << type << " node " << k + 1;
     }
     EXPECT_LT(f.S.cwiseAbs().maxCoeff(), 1e-6) << type;
+  }
+}
+
+TEST(PlaneElements, TiedBlocksPassThePatchTest) {
+  // Two blocks of 2D elements, r (x) in [1, 2], one on the other with coincident nodes at
+  // y = 1, the upper one's bottom tied to the lower one's top, pulled by a pressure of 10 on
+  // the top: the stress is 10 in y everywhere (plane strain: nu 10 in z). The slave copies of
+  // the expansion are tied through their 2D nodes; ccx 2.20 leaves some of them untied on the
+  // same deck (s_yy from 4.0 to 16.1: tests/peer/README.md).
+  for (const char* type : {"CAX8", "CPE8", "CPS4"}) {
+    const bool quadratic = std::string(type) != "CPS4";
+    std::ostringstream deck;
+    deck << "*NODE, NSET=NALL\n";
+    for (int block = 0; block < 2; ++block) {
+      const int base = 100 * block;
+      const Real y = block;
+      deck << base + 1 << ", 1, " << y << "\n" << base + 2 << ", 2, " << y << "\n"
+           << base + 3 << ", 2, " << y + 1 << "\n" << base + 4 << ", 1, " << y + 1 << "\n";
+      if (quadratic)
+        deck << base + 5 << ", 1.5, " << y << "\n" << base + 6 << ", 2, " << y + 0.5 << "\n"
+             << base + 7 << ", 1.5, " << y + 1 << "\n" << base + 8 << ", 1, " << y + 0.5
+             << "\n";
+    }
+    deck << "*ELEMENT, TYPE=" << type << ", ELSET=EALL\n";
+    for (int block = 0; block < 2; ++block) {
+      deck << block + 1;
+      for (int k = 1; k <= (quadratic ? 8 : 4); ++k) deck << ", " << 100 * block + k;
+      deck << "\n";
+    }
+    deck << "*ELSET, ELSET=LOW\n1\n*ELSET, ELSET=UP\n2\n"
+            "*SURFACE, NAME=MASTER\nLOW, S3\n*SURFACE, NAME=SLAVE\nUP, S1\n"
+            "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n"
+            "*TIE, NAME=T\nSLAVE, MASTER\n*BOUNDARY\n1, 2, 2\n2, 2, 2\n"
+         << (quadratic ? "5, 2, 2\n" : "") << (std::string(type) == "CAX8" ? "" : "1, 1, 1\n")
+         << "*STEP\n*STATIC\n*DLOAD\nUP, P3, -10\n*END STEP\n";
+    model::Model m = inp::read_deck_text(deck.str(), "tied.inp");
+    EXPECT_GT(contact::apply_ties(m), 0) << type;
+    Collect c;
+    analysis::run_linear_static(m, {.threads = 1}, c, c);
+    const output::Frame& f = c.frames.at(0);
+    const Real szz = std::string(type) == "CPE8" ? 0.3 * 10 : 0;
+    for (Index k = 0; k < f.S.rows(); ++k) {
+      EXPECT_NEAR(f.S(k, 1), 10.0, 1e-9) << type << " point " << k;
+      EXPECT_NEAR(f.S(k, 0), 0.0, 1e-9) << type << " point " << k;
+      EXPECT_NEAR(f.S(k, 2), szz, 1e-9) << type << " point " << k;
+    }
   }
 }
