@@ -39,7 +39,10 @@ std::vector<SurfaceFace> exterior_faces_at(const model::Model& model, const std:
   for (std::size_t e = 0; e < model.mesh.elements.size(); ++e) {
     const auto& el = model.mesh.elements[e];
     const int n_faces = element::traits(el.type).n_faces;
-    for (int f = 1; f <= n_faces; ++f) {
+    // Faces 1 and 2 of a 2D element's expansion are the front and back of its layer, no
+    // boundary of the 2D body: its edges (faces 3 on) carry the area.
+    const int first_face = el.planar == model::Planar::None ? 1 : 3;
+    for (int f = first_face; f <= n_faces; ++f) {
       SurfaceFace sf{static_cast<int>(e), f, element::face_topology(el.type, f), el.type, {}};
       bool touches = false;
       for (int local : element::face_nodes(el.type, f)) {

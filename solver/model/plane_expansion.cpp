@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace kontakt::model {
@@ -50,6 +51,7 @@ class Expander {
     adjust_step_loads();
     copy_temperatures();
     build_folds();
+    expand_node_surfaces();
   }
 
  private:
@@ -97,13 +99,6 @@ class Expander {
         }
       }
     }
-    for (const auto& [name, surface] : model_.surfaces)
-      for (int n : surface.nodes)
-        if (planar_nodes_.contains(n))
-          throw InputError(surface.where, "*SURFACE",
-                           "node surface " + name + " has node " + label_of(model_, n) +
-                               " of a 2D element: node surfaces on 2D elements are not "
-                               "supported (use an element face surface)");
   }
 
   int add_node(int source, const Vec3& x) {
@@ -292,6 +287,26 @@ class Expander {
         fold.weights.push_back(share * side);
       }
       model_.planar_folds.push_back(std::move(fold));
+    }
+  }
+
+  /// A node surface's 2D node stands for all its copies, each a slave node with its share of
+  /// the expanded faces (bolt: node-to-surface contact on CAX8 nodes).
+  void expand_node_surfaces() {
+    std::unordered_map<int, const PlanarFold*> fold_of;
+    for (const PlanarFold& fold : model_.planar_folds) fold_of[fold.node] = &fold;
+    for (auto& [name, surface] : model_.surfaces) {
+      std::vector<int> nodes;
+      for (int n : surface.nodes) {
+        const auto fold = fold_of.find(n);
+        if (fold == fold_of.end())
+          nodes.push_back(n);
+        else
+          nodes.insert(nodes.end(), fold->second->expanded.begin(), fold->second->expanded.end());
+      }
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      surface.nodes = std::move(nodes);
     }
   }
 };

@@ -28,11 +28,12 @@ inline constexpr Real kWedgeLoadFactor = 1.0 / 180.0;
 
 /// Replaces the 2D elements of `model` by their 3D expansion in place: new nodes (labels after
 /// the largest deck label), constraint equations, faces of surfaces and pressures renumbered
-/// (edge k -> face k + 2), *CLOAD of axisymmetric models scaled, temperatures copied to the new
-/// nodes, and Model::planar_folds filled. `element_where` is the *ELEMENT line of each element
-/// (for messages). Throws InputError for what ccx refuses or Kontakt does not build: a 2D node
-/// off z = 0, a 2D node shared with a solid or carrying a *TRANSFORM or used in a node
-/// surface, a degenerate or (axisymmetric) clockwise element, a node at negative radius.
+/// (edge k -> face k + 2), a node surface's 2D nodes replaced by their copies, *CLOAD of
+/// axisymmetric models scaled, temperatures copied to the new nodes, and Model::planar_folds
+/// filled. `element_where` is the *ELEMENT line of each element (for messages). Throws
+/// InputError for what ccx refuses or Kontakt does not build: a 2D node off z = 0, a 2D node
+/// shared with a solid or carrying a *TRANSFORM, a degenerate or (axisymmetric) clockwise
+/// element, a node at negative radius.
 void expand_planar_elements(Model& model, const std::vector<SourceLoc>& element_where);
 
 /// The deck's 2D nodes' results from their expanded nodes: U the weighted mean (ccx: front and

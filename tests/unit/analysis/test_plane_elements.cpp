@@ -284,3 +284,45 @@ TEST(PlaneElements, TiedBlocksPassThePatchTest) {
     }
   }
 }
+
+TEST(PlaneElements, ANodeSurfaceOnPlaneNodesTouchesThroughItsCopiesWithTheEdgeArea) {
+  // Two CPE4 strips 2 x 1 (4 elements, thickness 0.5), the upper one on the lower one by
+  // node-to-surface contact from a node surface of its bottom 2D nodes. Each copy of an inner
+  // node carries its share of the bottom edges, 2 x 0.5 x 0.5 / 4 = 0.125: the front and
+  // back of the expanded layer are no boundary of the 2D body and add nothing.
+  std::ostringstream deck;
+  deck << "*NODE, NSET=NALL\n";
+  for (int block = 0; block < 2; ++block)
+    for (int row = 0; row < 2; ++row)
+      for (int i = 0; i <= 4; ++i)
+        deck << 100 * block + 10 * row + i + 1 << ", " << 0.5 * i << ", " << block + row << "\n";
+  deck << "*ELEMENT, TYPE=CPE4, ELSET=EALL\n";
+  for (int block = 0; block < 2; ++block)
+    for (int i = 0; i < 4; ++i) {
+      const int n = 100 * block + i + 1;
+      deck << 10 * block + i + 1 << ", " << n << ", " << n + 1 << ", " << n + 11 << ", " << n + 10
+           << "\n";
+    }
+  deck << "*ELSET, ELSET=LOW, GENERATE\n1, 4\n*ELSET, ELSET=UP, GENERATE\n11, 14\n"
+          "*NSET, NSET=UPBOT, GENERATE\n101, 105\n*SURFACE, NAME=MASTER\nLOW, S3\n"
+          "*SURFACE, NAME=SLAVE, TYPE=NODE\nUPBOT\n"
+          "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n0.5\n"
+          "*SURFACE INTERACTION, NAME=I\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1000\n"
+          "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nSLAVE, MASTER\n"
+          "*BOUNDARY\n1, 1, 2\n2, 2, 2\n3, 2, 2\n4, 2, 2\n5, 2, 2\n101, 1, 1\n"
+          "*STEP\n*STATIC\n*DLOAD\nUP, P3, 10\n*END STEP\n";
+  const model::Model m = inp::read_deck_text(deck.str(), "stack.inp");
+  Collect c;
+  analysis::run_nonlinear_static(m, {}, c, c);
+  const output::Frame& f = c.frames.back();
+  int inner = 0;
+  for (const output::ContactPointRecord& p : f.contact_points) {
+    const Real x = m.mesh.coords(p.slave_node, 0);
+    if (x < 0.25 || x > 1.75) continue;  // the strip's ends also carry a share of its sides
+    ++inner;
+    EXPECT_TRUE(p.active);
+    // In the deformed configuration: the strip widens by about 5e-3 under the load.
+    EXPECT_NEAR(p.area, 0.125, 1e-3) << "node " << m.mesh.node_ids[p.slave_node];
+  }
+  EXPECT_EQ(inner, 6);  // front and back copies of nodes 102, 103, 104
+}
