@@ -115,6 +115,9 @@ model::ContactPair resolve_pair(const DeckState& state, const RawContactPair& ra
                      "interaction " + interaction.name +
                          " has no *SURFACE BEHAVIOR, which contact needs");
 
+  // A node-to-surface slave named for both node and element-face surfaces is the nodes one.
+  if (pair.type == PairType::NodeToSurface && state.surfaces.contains(node_surface_key(pair.slave)))
+    pair.slave = node_surface_key(pair.slave);
   const model::Surface& slave = pair_surface(state, pair, pair.slave, "slave");
   const model::Surface& master = pair_surface(state, pair, pair.master, "master");
   if (master.kind != model::Surface::Kind::ElementFaces)

@@ -72,6 +72,10 @@ struct RawSurface {
   SourceLoc where;
 };
 
+/// The key of the node variant of a surface name that also names element faces. Deck names
+/// lose their blanks, so this key never meets one.
+inline std::string node_surface_key(const std::string& name) { return name + " (TYPE=NODE)"; }
+
 struct RawSection {
   std::string elset;
   std::string material;
@@ -158,6 +162,8 @@ struct DeckState {
   std::vector<std::vector<int>> element_node_labels;  ///< parallel to model.mesh.elements
   std::vector<int> element_line_ids;
   std::map<std::string, RawSet> node_sets, element_sets;
+  /// By name; a node surface that shares its name with an element-face surface (ccx keeps
+  /// both and picks by role) is kept under node_surface_key(name).
   std::map<std::string, RawSurface> surfaces;
   std::vector<RawSection> sections;
   std::vector<RawRigidBody> rigid_bodies;

@@ -264,7 +264,6 @@ void handle_surface(const Record& record, DeckState& state) {
   const std::string name = set_name(required_value(record, "NAME"));
   const std::string type = name_value(record, "TYPE").value_or("ELEMENT");
   if (type != "ELEMENT" && type != "NODE") fail(record, "TYPE=" + type + " is not supported");
-  if (state.surfaces.contains(name)) fail(record, "surface " + name + " defined twice");
   RawSurface surface;
   surface.where = record.where;
   surface.kind = type == "NODE" ? model::Surface::Kind::Nodes : model::Surface::Kind::ElementFaces;
@@ -286,7 +285,27 @@ void handle_surface(const Record& record, DeckState& state) {
       }
     }
   }
-  state.surfaces.emplace(name, std::move(surface));
+  // ccx adds a repeated definition to the surface (metalformingmortar), and keeps a node and
+  // an element-face surface of one name apart, picking by role (metalforming): the element
+  // faces stay under the name, the nodes go under node_surface_key().
+  std::string key = name;
+  if (const auto other = state.surfaces.find(name);
+      other != state.surfaces.end() && other->second.kind != surface.kind) {
+    key = node_surface_key(name);
+    if (surface.kind == model::Surface::Kind::ElementFaces) {  // the nodes move aside
+      auto nodes = state.surfaces.extract(other);
+      nodes.key() = key;
+      state.surfaces.insert(std::move(nodes));
+      key = name;
+    }
+  }
+  const auto [it, fresh] = state.surfaces.try_emplace(key, surface);
+  if (fresh) return;
+  RawSurface& to = it->second;
+  to.faces.insert(to.faces.end(), surface.faces.begin(), surface.faces.end());
+  to.node_labels.insert(to.node_labels.end(), surface.node_labels.begin(),
+                        surface.node_labels.end());
+  to.line_ids.insert(to.line_ids.end(), surface.line_ids.begin(), surface.line_ids.end());
 }
 
 }  // namespace kontakt::inp

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "inp/contact_builder.hpp"
 #include "inp/element_names.hpp"
@@ -215,6 +216,7 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
                              const RawSurface& raw) {
   const model::Mesh& mesh = state.model.mesh;
   model::Surface surface{name, raw.kind, {}, {}, raw.where};
+  std::set<std::pair<int, int>> seen_faces;
   for (const RawFace& face : raw.faces) {
     const SourceLoc& where = state.line_locs[static_cast<std::size_t>(face.line_id)];
     const auto found = mesh.element_index.find(face.element_label);
@@ -229,7 +231,9 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
                                               " (" + std::string(type.name) + ") has no face S" +
                                               std::to_string(face.face));
     }
-    surface.faces.push_back(model::ElementFace{found->second, face.face});
+    // A face named twice (overlapping sets, a repeated *SURFACE) is one face, as in ccx.
+    if (seen_faces.insert({found->second, face.face}).second)
+      surface.faces.push_back(model::ElementFace{found->second, face.face});
   }
   for (std::size_t i = 0; i < raw.node_labels.size(); ++i) {
     const auto found = mesh.node_index.find(raw.node_labels[i]);
@@ -239,6 +243,8 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
     }
     surface.nodes.push_back(found->second);
   }
+  std::sort(surface.nodes.begin(), surface.nodes.end());
+  surface.nodes.erase(std::unique(surface.nodes.begin(), surface.nodes.end()), surface.nodes.end());
   return surface;
 }
 

@@ -141,6 +141,25 @@ TEST(inpContact, NodeToSurfaceOptionsSchemesAndSeveralLines) {
   EXPECT_TRUE(has_warning(m, "defaults used: sigma_inf = E / 70000 = 3"));
 }
 
+TEST(inpContact, ARepeatedSurfaceGrowsAndANodeNamesakeServesNodeToSurfaceSlaves) {
+  // As ccx 2.20: a second *SURFACE of a name and type adds to it (a face named twice counts
+  // once: metalformingmortar); a node surface that shares a name with an element-face one is
+  // kept apart and is the slave of node-to-surface pairs (metalforming).
+  const Model m = read(
+      "*SURFACE, NAME=SLAVE\n2, S6\n2, S5\n*SURFACE, NAME=SLAVE, TYPE=NODE\n7\n"
+      "*SURFACE, NAME=SLAVE, TYPE=NODE\n6, 7\n" + test::linear_interaction() +
+      "*CONTACT PAIR, INTERACTION=SI, TYPE=NODE TO SURFACE\nSLAVE, MASTER\n" + kStep);
+  const model::Surface& faces = m.surfaces.at("SLAVE");
+  EXPECT_EQ(faces.kind, model::Surface::Kind::ElementFaces);
+  ASSERT_EQ(faces.faces.size(), 2u);  // S6 from both cards, S5
+  EXPECT_EQ(faces.faces[0].face, 6);
+  EXPECT_EQ(faces.faces[1].face, 5);
+  ASSERT_EQ(m.contact_pairs.size(), 1u);
+  const model::Surface& nodes = m.surfaces.at(m.contact_pairs[0].slave);
+  EXPECT_EQ(nodes.kind, model::Surface::Kind::Nodes);
+  EXPECT_EQ(nodes.nodes, (std::vector<int>{5, 6}));  // nodes 6, 7
+}
+
 TEST(inpContact, SmallSlidingIsIgnoredForSurfaceToSurface) {
   const Model m = read(test::linear_interaction() +
                        "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE, SMALL SLIDING, "
