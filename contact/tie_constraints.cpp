@@ -10,6 +10,7 @@
 
 #include "contact/cyclic_symmetry.hpp"
 #include "contact/master_search.hpp"
+#include "model/plane_expansion.hpp"
 
 namespace kontakt::contact {
 
@@ -265,7 +266,7 @@ model::Equation tie_equation(int slave, int dof, const SurfaceFace& face, const 
 std::map<int, std::optional<model::EquationTerm>> expansion_followers(const model::Model& model) {
   std::map<int, std::optional<model::EquationTerm>> out;
   for (const model::Equation& eq : model.equations) {
-    if (eq.keyword != "*ELEMENT") continue;
+    if (eq.keyword != model::kExpansionKeyword) continue;
     const model::EquationTerm& lead = eq.terms.front();
     std::optional<model::EquationTerm> followed;
     if (eq.terms.size() == 2)

@@ -182,7 +182,7 @@ class Expander {
   }
 
   void equation(std::size_t e, std::vector<EquationTerm> terms) {
-    model_.equations.push_back(Equation{std::move(terms), where_[e], "*ELEMENT"});
+    model_.equations.push_back(Equation{std::move(terms), where_[e], kExpansionKeyword});
   }
 
   /// Ties the copies to the 2D node (once per group; a middle copy added later by a

@@ -25,6 +25,9 @@ namespace kontakt::model {
 inline constexpr Real kWedgeHalfAngle = 3.14159265358979323846 / 180.0;
 /// The part of a 360-degree load the wedge carries.
 inline constexpr Real kWedgeLoadFactor = 1.0 / 180.0;
+/// The keyword of the equations that tie the copies to their 2D node (Equation::keyword):
+/// messages name the 2D element's card.
+inline constexpr const char* kExpansionKeyword = "*ELEMENT";
 
 /// Replaces the 2D elements of `model` by their 3D expansion in place: new nodes (labels after
 /// the largest deck label), constraint equations, faces of surfaces and pressures renumbered
