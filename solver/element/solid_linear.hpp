@@ -9,7 +9,7 @@
 #include "core/types.hpp"
 #include "element/element_type.hpp"
 #include "material/deformation_plasticity.hpp"
-#include "material/hyperelastic.hpp"
+#include "material/hyperelastic_potential.hpp"
 #include "material/temperature_table.hpp"
 
 namespace kontakt::element {
@@ -45,7 +45,7 @@ struct ThermoElastic {
   /// The material frame at a point x (columns: local axes); empty: the global axes.
   std::function<Mat3(const Vec3& x)> frame;
   /// Hyperelastic instead (elastic and anisotropic empty): total Lagrangian kernels only.
-  std::optional<material::HyperelasticPolynomial> hyperelastic;
+  std::optional<material::HyperelasticPotential> hyperelastic;
   /// Deformation plasticity instead (elastic and anisotropic empty): total Lagrangian only.
   std::optional<material::RambergOsgood> deformation_plasticity;
   MatX3 coords;  ///< the element's nodes, where `frame` is evaluated from (with frame only)

@@ -28,7 +28,7 @@ void nlgeom_element(ElementType type, const MatX3& X, const ThermoElastic& mat, 
       }
       if (mat.hyperelastic) {
         const material::HyperelasticResponse r =
-            material::polynomial_hyperelastic(*mat.hyperelastic, Fm.transpose() * Fm);
+            material::hyperelastic_response(*mat.hyperelastic, Fm.transpose() * Fm);
         out.energy_density(k) = r.energy;
         return TotalLagrangianResponse{r.stress, r.tangent};
       }

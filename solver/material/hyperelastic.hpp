@@ -4,15 +4,13 @@
 // with J = sqrt(det C), I1b = J^-2/3 tr C, I2b = J^-4/3 (tr(C)^2 - tr(C^2)) / 2 (the isochoric
 // invariants of the right Cauchy-Green tensor C = 1 + 2E). Neo-Hooke is C10 and D1 only,
 // Mooney-Rivlin C10, C01, D1.
-//
-// Conventions: Voigt order xx, yy, zz, xy, xz, yz; S with tensor components; the tangent is
-// dS/dE with E the Green-Lagrange strain in ENGINEERING shear, as the total-Lagrangian elements
-// take it.
+// Conventions: hyperelastic_response.hpp.
 #pragma once
 
 #include <array>
 
 #include "core/types.hpp"
+#include "material/hyperelastic_response.hpp"
 
 namespace kontakt::material {
 
@@ -21,12 +19,6 @@ namespace kontakt::material {
 struct HyperelasticPolynomial {
   std::array<std::array<Real, 4>, 4> c{};
   std::array<Real, 3> d{};
-};
-
-struct HyperelasticResponse {
-  Real energy = 0;              ///< U per unit reference volume
-  Vec6 stress = Vec6::Zero();   ///< second Piola-Kirchhoff S = dU/dE
-  Mat6 tangent = Mat6::Zero();  ///< dS/dE (engineering shear), symmetric
 };
 
 /// The response at the right Cauchy-Green tensor C (symmetric, det C > 0; SolverError

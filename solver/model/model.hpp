@@ -15,7 +15,7 @@
 #include "element/element_type.hpp"
 #include "material/hardening_curves.hpp"
 #include "material/deformation_plasticity.hpp"
-#include "material/hyperelastic.hpp"
+#include "material/hyperelastic_potential.hpp"
 #include "material/temperature_table.hpp"
 #include "model/contact.hpp"
 #include "model/local_frame.hpp"
@@ -101,8 +101,9 @@ struct Material {
   /// *ELASTIC, TYPE=ORTHO / ENGINEERING CONSTANTS / ANISO: the 21 D_IJKL of ccx's ANISO order
   /// (material/anisotropic_elastic) per temperature, in the material frame; empty: isotropic.
   material::TemperatureTable<21> anisotropic;
-  /// *HYPERELASTIC (polynomial family, one temperature): instead of *ELASTIC; NLGEOM only.
-  std::optional<material::HyperelasticPolynomial> hyperelastic;
+  /// *HYPERELASTIC (polynomial family, OGDEN) or *HYPERFOAM, one temperature: instead of
+  /// *ELASTIC; NLGEOM only.
+  std::optional<material::HyperelasticPotential> hyperelastic;
   /// *DEFORMATION PLASTICITY (one temperature): instead of *ELASTIC; NLGEOM only.
   std::optional<material::RambergOsgood> deformation_plasticity;
   material::TemperatureTable<1> density;    ///< *DENSITY per temperature

@@ -89,6 +89,25 @@ TEST_P(TotalLagrangian, TangentOfAHyperelasticMaterial) {
   check_tangent(type(), X(), mat, displacement(), VecX());
 }
 
+TEST_P(TotalLagrangian, TangentOfOgdenAndHyperfoamMaterials) {
+  if (type() == ElementType::C3D8R) GTEST_SKIP() << "refused by the reader";
+  ThermoElastic mat;
+  material::Ogden ogden;
+  ogden.n_terms = 2;
+  ogden.mu = {300, 80, 0};
+  ogden.alpha = {2.5, -1.5, 0};
+  ogden.d = {0.002, 0.01, 0};
+  mat.hyperelastic = ogden;
+  check_tangent(type(), X(), mat, displacement(), VecX());
+  material::Hyperfoam foam;
+  foam.n_terms = 2;
+  foam.mu = {300, 80, 0};
+  foam.alpha = {3, -2, 0};
+  foam.beta = {0.2, 0, 0};
+  mat.hyperelastic = foam;
+  check_tangent(type(), X(), mat, displacement(), VecX());
+}
+
 TEST_P(TotalLagrangian, FreeThermalExpansionByOnePlusAlphaDTIsStressFree) {
   // ccx 2.20 expands a free NLGEOM body by exactly 1 + alpha dT (measured); the Green-Lagrange
   // strain then is ((1 + a)^2 - 1) / 2, not a.
