@@ -19,6 +19,7 @@ void handle_material(const Record&, DeckState&);
 void handle_elastic(const Record&, DeckState&);
 void handle_hyperelastic(const Record&, DeckState&);
 void handle_membrane(const Record&, DeckState&);
+void handle_hyperfoam(const Record&, DeckState&);
 void handle_deformation_plasticity(const Record&, DeckState&);
 void handle_change_solid_section(const Record&, DeckState&);
 void handle_plastic(const Record&, DeckState&);

@@ -26,6 +26,7 @@ constexpr KeywordSpec kKeywords[] = {
     {"MATERIAL", M, Mat, handle_material},
     {"ELASTIC", M, Mat, handle_elastic},
     {"HYPERELASTIC", M, Mat, handle_hyperelastic},
+    {"HYPERFOAM", M, Mat, handle_hyperfoam},
     {"DEFORMATIONPLASTICITY", M, Mat, handle_deformation_plasticity},
     {"DENSITY", M, Mat, handle_density},
     {"PLASTIC", M, Mat, handle_plastic},

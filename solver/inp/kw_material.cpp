@@ -1,11 +1,11 @@
-// *MATERIAL, *ELASTIC, *HYPERELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION, *MEMBRANE,
-// *ORIENTATION.
+// *MATERIAL, *ELASTIC, *HYPERELASTIC, *HYPERFOAM, *DENSITY, *EXPANSION, *SOLID SECTION,
+// *MEMBRANE, *ORIENTATION.
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 #include "material/anisotropic_elastic.hpp"
-#include "material/hyperelastic.hpp"
+#include "material/hyperelastic_potential.hpp"
 
 #include "inp/keyword_handlers.hpp"
 #include "inp/record_access.hpp"
@@ -122,36 +122,109 @@ void handle_elastic(const Record& record, DeckState& state) {
   }
 }
 
+namespace {
+
+/// The n constants of *HYPERELASTIC / *HYPERFOAM in ccx's layout: 8 a line, the temperature
+/// after the last; one temperature only.
+std::vector<Real> hyperelastic_constants(const Record& record, std::size_t n) {
+  if (record.lines.empty()) fail(record, "data line missing");
+  std::vector<Real> values;
+  for (const DataLine& line : record.lines)
+    for (std::size_t i = 0; i < line.fields.size(); ++i)
+      values.push_back(real_field_or(record, line, i, 0));
+  if (values.size() < n || values.size() > n + 1 || record.lines.size() != (n + 8) / 8)
+    fail(record, record.lines.back(),
+         std::to_string(n) + " constants expected (8 a line), then the temperature: one "
+                             "temperature only (no table)");
+  values.resize(n);
+  return values;
+}
+
+/// The data line holding constant k (0-based) of hyperelastic_constants, and its field there.
+const DataLine& constant_line(const Record& record, std::size_t k) { return record.lines[k / 8]; }
+std::string constant_field(std::size_t k) { return "field " + std::to_string(k % 8 + 1); }
+
+/// The compressibility ccx takes for a D1 given as 0: an initial Poisson ratio of about 0.475
+/// (manual, "Hyperelastic and hyperfoam materials"); measured with ccx 2.20, D1 = 0.1 / mu at
+/// rest (bulk modulus 20 mu) for OGDEN N = 1, 2, 3.
+Real default_d1(Real shear_modulus) { return 0.1 / shear_modulus; }
+
+/// The N (mu_i, alpha_i) pairs leading OGDEN's and HYPERFOAM's constants: alpha_i nonzero and
+/// the shear modulus at rest, sum mu_i, positive. Returns that modulus.
+template <class Potential>
+Real read_stretch_terms(const Record& record, const std::vector<Real>& values, int n,
+                        Potential& p) {
+  p.n_terms = n;
+  Real shear_modulus = 0;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+    p.mu[i] = values[2 * i];
+    p.alpha[i] = values[2 * i + 1];
+    if (p.alpha[i] == 0)
+      fail(record, constant_line(record, 2 * i + 1),
+           "alpha" + std::to_string(i + 1) + " (" + constant_field(2 * i + 1) +
+               ") must not be zero");
+    shear_modulus += p.mu[i];
+  }
+  if (!(shear_modulus > 0))
+    fail(record, record.lines.front(),
+         "the sum of the mu_i (the shear modulus at rest) must be positive");
+  return shear_modulus;
+}
+
+/// OGDEN: mu_1, alpha_1, ..., mu_N, alpha_N, D_1, ..., D_N.
+material::Ogden read_ogden(const Record& record, int n) {
+  const std::size_t n_terms = static_cast<std::size_t>(n);
+  const std::vector<Real> values = hyperelastic_constants(record, 3 * n_terms);
+  material::Ogden p;
+  const Real shear_modulus = read_stretch_terms(record, values, n, p);
+  for (std::size_t k = 0; k < n_terms; ++k) {
+    p.d[k] = values[2 * n_terms + k];
+    if (p.d[k] < 0)
+      fail(record, constant_line(record, 2 * n_terms + k),
+           "D" + std::to_string(k + 1) + " (" + constant_field(2 * n_terms + k) +
+               ") must not be negative");
+  }
+  if (p.d[0] == 0) p.d[0] = default_d1(shear_modulus);
+  return p;
+}
+
+void set_potential(const Record& record, DeckState& state,
+                   const material::HyperelasticPotential& potential) {
+  model::Material& material = current_material(record, state);
+  if (material.hyperelastic)
+    fail(record, "material " + material.name + " has a *HYPERELASTIC or *HYPERFOAM potential "
+                                               "already");
+  material.hyperelastic = potential;
+}
+
+}  // namespace
+
 void handle_hyperelastic(const Record& record, DeckState& state) {
   // The model is a parameter without value (ccx's default: POLYNOMIAL, N=1).
   check_params(record, {"NEOHOOKE", "MOONEY-RIVLIN", "POLYNOMIAL", "REDUCEDPOLYNOMIAL", "YEOH",
-                        "N"});
+                        "OGDEN", "N"});
   const bool neo_hooke = has_param(record, "NEOHOOKE"), mooney = has_param(record, "MOONEY-RIVLIN");
   const bool reduced = has_param(record, "REDUCEDPOLYNOMIAL") || has_param(record, "YEOH");
-  if (neo_hooke + mooney + reduced + has_param(record, "POLYNOMIAL") > 1)
+  const bool ogden = has_param(record, "OGDEN");
+  if (neo_hooke + mooney + reduced + ogden + has_param(record, "POLYNOMIAL") > 1)
     fail(record, "more than one model given");
   int n = int_param(record, "N").value_or(1);
   if (has_param(record, "YEOH")) n = 3;
   if ((neo_hooke || mooney) && n != 1) fail(record, "N=" + std::to_string(n) + ": this model has N=1");
   if (n < 1 || n > 3) fail(record, "N=" + std::to_string(n) + ": expected 1, 2 or 3");
+  if (ogden) {
+    set_potential(record, state, read_ogden(record, n));
+    return;
+  }
   // The constants in ccx's order: the C_ij by order (i descending within an order; only C_i0
-  // for the reduced forms), then D_1..D_N; 8 a line, the temperature after the last.
+  // for the reduced forms), then D_1..D_N.
   std::vector<std::pair<int, int>> c_terms;
   for (int order = 1; order <= n; ++order)
     for (int i = order; i >= 0; --i)
       if (!(reduced || neo_hooke) || i == order) c_terms.emplace_back(i, order - i);
   if (neo_hooke) c_terms = {{1, 0}};
-  const std::size_t n_constants = c_terms.size() + static_cast<std::size_t>(n);
-  std::vector<Real> values;
-  if (record.lines.empty()) fail(record, "data line missing");
-  for (const DataLine& line : record.lines)
-    for (std::size_t i = 0; i < line.fields.size(); ++i)
-      values.push_back(real_field_or(record, line, i, 0));
-  if (values.size() < n_constants || values.size() > n_constants + 1 ||
-      record.lines.size() != (n_constants + 8) / 8)
-    fail(record, record.lines.back(),
-         std::to_string(n_constants) + " constants expected (8 a line), then the temperature: "
-                                       "one temperature only (no table)");
+  const std::vector<Real> values =
+      hyperelastic_constants(record, c_terms.size() + static_cast<std::size_t>(n));
   material::HyperelasticPolynomial p;
   for (std::size_t k = 0; k < c_terms.size(); ++k)
     p.c[static_cast<std::size_t>(c_terms[k].first)][static_cast<std::size_t>(c_terms[k].second)] =
@@ -166,8 +239,28 @@ void handle_hyperelastic(const Record& record, DeckState& state) {
   // Stable at rest: shear modulus 2 (C10 + C01) > 0.
   if (!(p.c[1][0] + p.c[0][1] > 0))
     fail(record, record.lines.front(), "C10 + C01 (half the shear modulus) must be positive");
-  model::Material& material = current_material(record, state);
-  material.hyperelastic = p;
+  set_potential(record, state, p);
+}
+
+/// mu_1, alpha_1, ..., mu_N, alpha_N, nu_1, ..., nu_N; beta_i = nu_i / (1 - 2 nu_i).
+void handle_hyperfoam(const Record& record, DeckState& state) {
+  check_params(record, {"N"});
+  const int n = int_param(record, "N").value_or(1);
+  if (n < 1 || n > 3) fail(record, "N=" + std::to_string(n) + ": expected 1, 2 or 3");
+  const std::size_t n_terms = static_cast<std::size_t>(n);
+  const std::vector<Real> values = hyperelastic_constants(record, 3 * n_terms);
+  material::Hyperfoam p;
+  read_stretch_terms(record, values, n, p);
+  for (std::size_t k = 0; k < n_terms; ++k) {
+    const Real nu = values[2 * n_terms + k];
+    // nu -> 1/2: beta and the bulk modulus grow without bound; nu <= -1: no positive bulk modulus.
+    if (!(nu > -1 && nu < 0.5))
+      fail(record, constant_line(record, 2 * n_terms + k),
+           "nu" + std::to_string(k + 1) + " (" + constant_field(2 * n_terms + k) +
+               ") must lie between -1 and 0.5");
+    p.beta[k] = nu / (1 - 2 * nu);
+  }
+  set_potential(record, state, p);
 }
 
 /// E, nu, sigma0, n, alpha[, temperature]: one temperature only.

@@ -254,7 +254,7 @@ void require_deformation_plasticity_support(const model::Model& model, const mod
   if (mat.hyperelastic || !mat.plastic.empty() || !mat.elastic.empty() || !mat.anisotropic.empty())
     throw InputError(mat.where, "*MATERIAL",
                      "material " + mat.name + ": *DEFORMATION PLASTICITY stands alone (no *ELASTIC, "
-                                              "*PLASTIC or *HYPERELASTIC)");
+                                              "*PLASTIC, *HYPERELASTIC or *HYPERFOAM)");
   for (const model::Step& step : model.steps) {
     if (!step.nlgeom)
       throw InputError(step.where, "*STEP",
@@ -332,8 +332,8 @@ void assign_sections(DeckState& state) {
     if (mat.hyperelastic && (!mat.plastic.empty() || !mat.elastic.empty() ||
                              !mat.anisotropic.empty()))
       throw InputError(mat.where, "*MATERIAL",
-                       "material " + mat.name + ": *HYPERELASTIC stands alone here (no *ELASTIC, "
-                                                "no *PLASTIC)");
+                       "material " + mat.name + ": *HYPERELASTIC / *HYPERFOAM stands alone here "
+                                                "(no *ELASTIC, no *PLASTIC)");
     if (mat.hyperelastic) {  // the linear kernels have no hyperelastic law
       for (const model::Step& step : model.steps)
         if (!step.nlgeom)

@@ -132,6 +132,51 @@ std::vector<BadDeck> material_bad_decks() {
        28, "*HYPERELASTIC", "N=4: expected 1, 2 or 3"},
       {"hyperelastic unstable", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, MOONEY-RIVLIN\n1., -2., .1\n"),
        29, "*HYPERELASTIC", "C10 + C01"},
+      {"ogden constants missing", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, N=2\n1., 2., .5, 3., .1\n"),
+       29, "*HYPERELASTIC", "6 constants expected (8 a line)"},
+      {"ogden third order on one line",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, N=3\n1., 2., .5, -2., .1, 4., .1, 0., .2\n"), 29,
+       "*HYPERELASTIC", "9 constants expected (8 a line)"},
+      {"ogden order 4", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, N=4\n1., 2., .1\n"), 28,
+       "*HYPERELASTIC", "N=4: expected 1, 2 or 3"},
+      {"ogden alpha zero", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN\n1., 0., .1\n"), 29,
+       "*HYPERELASTIC", "alpha1 (field 2) must not be zero"},
+      {"ogden second alpha zero",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, N=2\n1., 2., .5, 0., .1, 0.\n"), 29,
+       "*HYPERELASTIC", "alpha2 (field 4) must not be zero"},
+      {"ogden unstable",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, N=2\n1., 2., -3., -2., .1, 0.\n"), 29,
+       "*HYPERELASTIC", "the sum of the mu_i (the shear modulus at rest) must be positive"},
+      {"ogden D3 negative",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, N=3\n1., 2., .5, -2., .1, 4., .1, 0.\n-.2\n"),
+       30, "*HYPERELASTIC", "D3 (field 1) must not be negative"},
+      {"ogden and neo hooke", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN, NEO HOOKE\n1., 2., .1\n"),
+       28, "*HYPERELASTIC", "more than one model given"},
+      {"hyperfoam nu one half",
+       plus("*MATERIAL, NAME=T\n*HYPERFOAM, N=2\n.16, 8.9, 2e-5, -4.8, 0., .5\n"), 29, "*HYPERFOAM",
+       "nu2 (field 6) must lie between -1 and 0.5"},
+      {"hyperfoam nu minus one", plus("*MATERIAL, NAME=T\n*HYPERFOAM\n.5, 3., -1.\n"), 29,
+       "*HYPERFOAM", "nu1 (field 3) must lie between -1 and 0.5"},
+      {"hyperfoam third nu on the second line",
+       plus("*MATERIAL, NAME=T\n*HYPERFOAM, N=3\n.5, 3., .2, -2., .1, 2., 0., .1\n.7\n"), 30,
+       "*HYPERFOAM", "nu3 (field 1) must lie between -1 and 0.5"},
+      {"hyperfoam order 0", plus("*MATERIAL, NAME=T\n*HYPERFOAM, N=0\n.5, 3., .2\n"), 28,
+       "*HYPERFOAM", "N=0: expected 1, 2 or 3"},
+      {"hyperfoam constants missing", plus("*MATERIAL, NAME=T\n*HYPERFOAM\n.5, 3.\n"), 29,
+       "*HYPERFOAM", "3 constants expected (8 a line)"},
+      {"hyperfoam two temperatures", plus("*MATERIAL, NAME=T\n*HYPERFOAM\n.5, 3., .2, 20.\n.4, 3., .2, 80.\n"),
+       30, "*HYPERFOAM", "one temperature only"},
+      {"hyperfoam alpha zero", plus("*MATERIAL, NAME=T\n*HYPERFOAM\n.5, 0., .2\n"), 29,
+       "*HYPERFOAM", "alpha1 (field 2) must not be zero"},
+      {"hyperfoam model parameter", plus("*MATERIAL, NAME=T\n*HYPERFOAM, OGDEN\n.5, 3., .2\n"), 28,
+       "*HYPERFOAM", "OGDEN"},
+      {"hyperfoam after hyperelastic",
+       plus("*MATERIAL, NAME=T\n*HYPERELASTIC, OGDEN\n1., 2., .1\n*HYPERFOAM\n.5, 3., .2\n"), 30,
+       "*HYPERFOAM", "material T has a *HYPERELASTIC or *HYPERFOAM potential already"},
+      {"hyperfoam without NLGEOM",
+       plus("*MATERIAL, NAME=T\n*HYPERFOAM\n.5, 3., .2\n*SOLID SECTION, ELSET=EALL, "
+            "MATERIAL=T\n*STEP\n*STATIC\n*END STEP\n"),
+       31, "*STEP", "material T is hyperelastic: every step needs NLGEOM"},
       {"hyperelastic without NLGEOM",
        plus("*MATERIAL, NAME=T\n*HYPERELASTIC\n1., 0., .1\n*SOLID SECTION, ELSET=EALL, "
             "MATERIAL=T\n*STEP\n*STATIC\n*END STEP\n"),
@@ -139,7 +184,7 @@ std::vector<BadDeck> material_bad_decks() {
       {"hyperelastic with elastic",
        plus("*MATERIAL, NAME=T\n*ELASTIC\n1., .3\n*HYPERELASTIC, NEO HOOKE\n1., .1\n"
             "*SOLID SECTION, ELSET=EALL, MATERIAL=T\n"),
-       27, "*MATERIAL", "*HYPERELASTIC stands alone"},
+       27, "*MATERIAL", "*HYPERELASTIC / *HYPERFOAM stands alone"},
       {"deformation plasticity four constants",
        plus("*MATERIAL, NAME=T\n*DEFORMATION PLASTICITY\n190000., .34, 900., 12.\n"), 29,
        "*DEFORMATION PLASTICITY", "expected at least 5 field(s)"},
@@ -211,6 +256,38 @@ const model::Material& material(const model::Model& m, const std::string& name) 
   for (const auto& mat : m.materials)
     if (mat.name == name) return mat;
   throw std::runtime_error("no material " + name);
+}
+
+TEST(inpMaterial, OgdenConstantsInCcxOrderAndTheDefaultCompressibility) {
+  // N=3 over two lines; D1 = 0 takes ccx's default 0.1 / sum mu_i; a negative alpha is valid.
+  const model::Model m = read_deck_text(test::two_cubes_model() +
+                                        "*MATERIAL, NAME=RUBBER\n"
+                                        "*HYPERELASTIC, OGDEN, N=3\n"
+                                        "1.5, 2.5, .5, -2., .2, 4., 0., .3\n"
+                                        ".7, 20.\n");
+  ASSERT_TRUE(material(m, "RUBBER").hyperelastic.has_value());
+  const auto* ogden = std::get_if<material::Ogden>(&*material(m, "RUBBER").hyperelastic);
+  ASSERT_NE(ogden, nullptr);
+  EXPECT_EQ(ogden->n_terms, 3);
+  EXPECT_EQ(ogden->mu, (std::array<Real, 3>{1.5, .5, .2}));
+  EXPECT_EQ(ogden->alpha, (std::array<Real, 3>{2.5, -2., 4.}));
+  EXPECT_DOUBLE_EQ(ogden->d[0], 0.1 / 2.2);
+  EXPECT_EQ(ogden->d[1], .3);
+  EXPECT_EQ(ogden->d[2], .7);
+}
+
+TEST(inpMaterial, HyperfoamPoissonRatiosBecomeBetas) {
+  const model::Model m = read_deck_text(test::two_cubes_model() +
+                                        "*MATERIAL, NAME=FOAM\n"
+                                        "*HYPERFOAM, N=2\n"
+                                        "0.164861, 8.88413, 2.302e-5, -4.81798, 0., .25\n");
+  const auto* foam = std::get_if<material::Hyperfoam>(&*material(m, "FOAM").hyperelastic);
+  ASSERT_NE(foam, nullptr);
+  EXPECT_EQ(foam->n_terms, 2);
+  EXPECT_EQ(foam->mu[1], 2.302e-5);
+  EXPECT_EQ(foam->alpha[1], -4.81798);
+  EXPECT_EQ(foam->beta[0], 0.);
+  EXPECT_EQ(foam->beta[1], .5);  // .25 / (1 - .5)
 }
 
 TEST(inpMaterial, TemperatureTablesAreStoredRowByRow) {
