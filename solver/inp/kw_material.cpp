@@ -1,6 +1,7 @@
 // *MATERIAL, *ELASTIC, *HYPERELASTIC, *HYPERFOAM, *DENSITY, *EXPANSION, *SOLID SECTION,
 // *MEMBRANE, *ORIENTATION.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -144,10 +145,13 @@ std::vector<Real> hyperelastic_constants(const Record& record, std::size_t n) {
 const DataLine& constant_line(const Record& record, std::size_t k) { return record.lines[k / 8]; }
 std::string constant_field(std::size_t k) { return "field " + std::to_string(k % 8 + 1); }
 
-/// The compressibility ccx takes for a D1 given as 0: an initial Poisson ratio of about 0.475
-/// (manual, "Hyperelastic and hyperfoam materials"); measured with ccx 2.20, D1 = 0.1 / mu at
-/// rest (bulk modulus 20 mu) for OGDEN N = 1, 2, 3.
-Real default_d1(Real shear_modulus) { return 0.1 / shear_modulus; }
+/// The compressibility ccx takes for a D_k given as 0 (manual, "Hyperelastic and hyperfoam
+/// materials": an initial Poisson ratio of 0.475), measured with ccx 2.20 on single-element
+/// decks for OGDEN N = 1..3, NEO HOOKE, MOONEY-RIVLIN, POLYNOMIAL and REDUCED POLYNOMIAL N = 2:
+/// D_k = (0.1 / mu)^k with mu the shear modulus at rest (D1 alone: a bulk modulus of 20 mu).
+Real default_compressibility(Real shear_modulus, std::size_t k) {
+  return std::pow(0.1 / shear_modulus, static_cast<Real>(k));
+}
 
 /// The N (mu_i, alpha_i) pairs leading OGDEN's and HYPERFOAM's constants: alpha_i nonzero and
 /// the shear modulus at rest, sum mu_i, positive. Returns that modulus.
@@ -183,8 +187,8 @@ material::Ogden read_ogden(const Record& record, int n) {
       fail(record, constant_line(record, 2 * n_terms + k),
            "D" + std::to_string(k + 1) + " (" + constant_field(2 * n_terms + k) +
                ") must not be negative");
+    if (p.d[k] == 0) p.d[k] = default_compressibility(shear_modulus, k + 1);
   }
-  if (p.d[0] == 0) p.d[0] = default_d1(shear_modulus);
   return p;
 }
 
@@ -229,16 +233,17 @@ void handle_hyperelastic(const Record& record, DeckState& state) {
   for (std::size_t k = 0; k < c_terms.size(); ++k)
     p.c[static_cast<std::size_t>(c_terms[k].first)][static_cast<std::size_t>(c_terms[k].second)] =
         values[k];
-  for (int k = 0; k < n; ++k) {
-    const Real d = values[c_terms.size() + static_cast<std::size_t>(k)];
-    if (k == 0 && !(d > 0))
-      fail(record, record.lines.back(), "D1 must be positive (a fully incompressible material is "
-                                        "not supported)");
-    p.d[static_cast<std::size_t>(k)] = d;
-  }
   // Stable at rest: shear modulus 2 (C10 + C01) > 0.
   if (!(p.c[1][0] + p.c[0][1] > 0))
     fail(record, record.lines.front(), "C10 + C01 (half the shear modulus) must be positive");
+  for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
+    const std::size_t index = c_terms.size() + k;
+    p.d[k] = values[index];
+    if (p.d[k] < 0)
+      fail(record, constant_line(record, index),
+           "D" + std::to_string(k + 1) + " (" + constant_field(index) + ") must not be negative");
+    if (p.d[k] == 0) p.d[k] = default_compressibility(2 * (p.c[1][0] + p.c[0][1]), k + 1);
+  }
   set_potential(record, state, p);
 }
 

@@ -2,6 +2,10 @@
 // them, and every malformed form (run by test_errors.cpp through material_bad_decks()).
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <variant>
+
 #include "bad_deck.hpp"
 #include "deck_fixtures.hpp"
 #include "inp/read_deck.hpp"
@@ -123,8 +127,8 @@ std::vector<BadDeck> material_bad_decks() {
        "*ORIENTATION", "orientation O defined twice"},
       {"hyperelastic unknown model", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, ARRUDA-BOYCE\n1, 1, 1\n"),
        28, "*HYPERELASTIC", "ARRUDA-BOYCE"},
-      {"hyperelastic D1 zero", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, NEO HOOKE\n1., 0.\n"), 29,
-       "*HYPERELASTIC", "D1 must be positive"},
+      {"hyperelastic D1 negative", plus("*MATERIAL, NAME=T\n*HYPERELASTIC, NEO HOOKE\n1., -.1\n"),
+       29, "*HYPERELASTIC", "D1 (field 2) must not be negative"},
       {"hyperelastic constants missing",
        plus("*MATERIAL, NAME=T\n*HYPERELASTIC, MOONEY-RIVLIN\n1., .03\n"), 29, "*HYPERELASTIC",
        "3 constants expected"},
@@ -274,6 +278,28 @@ TEST(inpMaterial, OgdenConstantsInCcxOrderAndTheDefaultCompressibility) {
   EXPECT_DOUBLE_EQ(ogden->d[0], 0.1 / 2.2);
   EXPECT_EQ(ogden->d[1], .3);
   EXPECT_EQ(ogden->d[2], .7);
+}
+
+TEST(inpMaterial, EveryZeroCompressibilityTakesCcxsDefault) {
+  // D_k = 0: (0.1 / mu)^k, mu the shear modulus at rest (2 (C10 + C01) for the polynomials).
+  const model::Model m = read_deck_text(test::two_cubes_model() +
+                                        "*MATERIAL, NAME=POLY\n"
+                                        "*HYPERELASTIC, POLYNOMIAL, N=2\n"
+                                        ".75, .25, .1, 0., 0., 0., 0.\n"
+                                        "*MATERIAL, NAME=OGDEN\n"
+                                        "*HYPERELASTIC, OGDEN, N=3\n"
+                                        "1.5, 2.5, .5, -2., .2, 4., .3, 0.\n"
+                                        "0.\n");
+  const auto* poly = std::get_if<material::HyperelasticPolynomial>(&*material(m, "POLY").hyperelastic);
+  ASSERT_NE(poly, nullptr);
+  EXPECT_DOUBLE_EQ(poly->d[0], 0.05);
+  EXPECT_DOUBLE_EQ(poly->d[1], 0.05 * 0.05);
+  EXPECT_EQ(poly->d[2], 0.);  // N=2: no third term
+  const auto* ogden = std::get_if<material::Ogden>(&*material(m, "OGDEN").hyperelastic);
+  ASSERT_NE(ogden, nullptr);
+  EXPECT_EQ(ogden->d[0], .3);
+  EXPECT_DOUBLE_EQ(ogden->d[1], std::pow(0.1 / 2.2, 2));
+  EXPECT_DOUBLE_EQ(ogden->d[2], std::pow(0.1 / 2.2, 3));
 }
 
 TEST(inpMaterial, HyperfoamPoissonRatiosBecomeBetas) {
