@@ -35,8 +35,8 @@ The nonlinear peer set (`nlgeom=True`, run_peer.py --nlgeom) applies the same ru
 that it requires a *STEP with NLGEOM instead of forbidding it, and admits *PLASTIC with
 HARDENING= absent, ISOTROPIC, KINEMATIC or COMBINED (with *CYCLIC HARDENING; curves by
 temperature admitted), and
-*HYPERELASTIC with a potential of HYPERELASTIC_MODELS in a deck without *DLOAD, and *DEFORMATION
-PLASTICITY in a deck that prints no ENER or ELSE. The linear set keeps *PLASTIC out: ccx
+*HYPERELASTIC with a potential of HYPERELASTIC_MODELS and *HYPERFOAM in a deck without *DLOAD,
+and *DEFORMATION PLASTICITY in a deck that prints no ENER or ELSE. The linear set keeps *PLASTIC out: ccx
 switches NLGEOM on for any deck with a *PLASTIC material, so such a deck is nonlinear there
 whatever its *STEP says.
 
@@ -100,8 +100,9 @@ SUPPORTED_KEYWORDS = {
 MPC_TYPES = {"PLANE", "STRAIGHT", "MEANROT"}
 ELASTIC_TYPES = ("ISO", "ORTHO", "ENGINEERINGCONSTANTS", "ANISO")  # as ccx: by first characters
 FORBIDDEN_PARAMETERS = {"USER"}
-# *HYPERELASTIC potentials of the nonlinear set (the polynomial family; OGDEN, ARRUDA-BOYCE out).
-HYPERELASTIC_MODELS = {"NEO HOOKE", "MOONEY-RIVLIN", "POLYNOMIAL", "REDUCED POLYNOMIAL", "YEOH"}
+# *HYPERELASTIC potentials of the nonlinear set (the polynomial family and OGDEN; ARRUDA-BOYCE out).
+HYPERELASTIC_MODELS = {"NEO HOOKE", "MOONEY-RIVLIN", "POLYNOMIAL", "REDUCED POLYNOMIAL", "YEOH",
+                       "OGDEN"}
 CONTACT_KEYWORDS = {"CONTACT PAIR", "SURFACE INTERACTION", "SURFACE BEHAVIOR", "CONTACT PRINT",
                     "CONTACT FILE", "CONTACT OUTPUT", "FRICTION", "CHANGE FRICTION",
                     "CHANGE SURFACE BEHAVIOR"}
@@ -326,14 +327,14 @@ def exclusion_reason(path, nlgeom=False, contact=False, tie=False):
                    for k, _, d in recs):
                 return "*DEFORMATION PLASTICITY with *EL PRINT of ENER or ELSE"
             continue
-        if keyword == "HYPERELASTIC" and nlgeom:  # (b), nonlinear set only
+        if keyword in ("HYPERELASTIC", "HYPERFOAM") and nlgeom:  # (b), nonlinear set only
             models = set(params) - {"N"}
-            if not models <= HYPERELASTIC_MODELS:
+            if keyword == "HYPERELASTIC" and not models <= HYPERELASTIC_MODELS:
                 return f"*HYPERELASTIC, {sorted(models - HYPERELASTIC_MODELS)[0]}"
             # A pressure on a hyperelastic body: ccx 2.20 stops one Newton iteration earlier
             # than Kontakt (beamnh: 3 against 4, 2.4e-3 apart; an *ELASTIC column alike): open.
             if any(k == "DLOAD" for k, _, _ in recs):
-                return "*HYPERELASTIC with *DLOAD"
+                return f"*{keyword} with *DLOAD"
             continue
         if keyword not in keywords:  # (b)
             return f"keyword *{keyword}"

@@ -103,16 +103,26 @@ class SelectDecks(unittest.TestCase):
                 text = plastic.replace(old, new, 1)
                 self.assertEqual(exclusion_reason(self.deck(text), nlgeom=True), reason)
 
-    def test_nonlinear_set_admits_polynomial_hyperelasticity_without_pressure(self):
+    def test_nonlinear_set_admits_hyperelasticity_and_hyperfoam_without_pressure(self):
         nl = GOOD.replace("*STEP\n", "*STEP, NLGEOM\n")
         hyper = nl.replace("*ELASTIC\n210000, 0.3\n", "*HYPERELASTIC, NEO HOOKE\n1.9, 0.026\n")
         self.assertEqual(exclusion_reason(self.deck(hyper), nlgeom=True),
                          "*HYPERELASTIC with *DLOAD")
         unloaded = hyper.replace("*DLOAD\nEALL, P2, 1.\n", "")
         self.assertIsNone(exclusion_reason(self.deck(unloaded), nlgeom=True))
-        ogden = unloaded.replace("NEO HOOKE", "OGDEN, N=1")
-        self.assertEqual(exclusion_reason(self.deck(ogden), nlgeom=True), "*HYPERELASTIC, OGDEN")
+        ogden = unloaded.replace("NEO HOOKE\n1.9, 0.026", "OGDEN, N=1\n3.488, 2.163, 0.")
+        self.assertIsNone(exclusion_reason(self.deck(ogden), nlgeom=True))
+        arruda = unloaded.replace("NEO HOOKE\n1.9, 0.026", "ARRUDA-BOYCE\n1., 7., .1")
+        self.assertEqual(exclusion_reason(self.deck(arruda), nlgeom=True),
+                         "*HYPERELASTIC, ARRUDA-BOYCE")
+        foam = unloaded.replace("*HYPERELASTIC, NEO HOOKE\n1.9, 0.026", "*HYPERFOAM, N=1\n.5, 3., .2")
+        self.assertIsNone(exclusion_reason(self.deck(foam), nlgeom=True))
+        pressed_foam = hyper.replace("*HYPERELASTIC, NEO HOOKE\n1.9, 0.026",
+                                     "*HYPERFOAM, N=1\n.5, 3., .2")
+        self.assertEqual(exclusion_reason(self.deck(pressed_foam), nlgeom=True),
+                         "*HYPERFOAM with *DLOAD")
         self.assertEqual(exclusion_reason(self.deck(unloaded)), "keyword *HYPERELASTIC")
+        self.assertEqual(exclusion_reason(self.deck(foam)), "keyword *HYPERFOAM")
 
     def test_constraints_and_connectors(self):
         model_end = "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n"
