@@ -7,8 +7,9 @@ std::string singular_mode_warning(const model::Model& model, const assembly::Dof
   const int eq = report.singular_equation;
   std::string where = eq >= 0 ? " at " + dofs.describe_unknown(model, dofs.equation_dof(eq)) : "";
   return "the stiffness matrix has a zero-energy mode" + where +
-         " (hourglassing of reduced-integration elements, a missing constraint or a body held "
-         "only by contact that does not touch) that the loads do not excite; solved with "
+         " (hourglassing of reduced-integration elements, a missing constraint, a body held "
+         "only by contact that does not touch or a truss joint free across its bars) that the "
+         "loads do not excite; solved with "
          "stabilisation, the displacement in that mode is not determined by the model";
 }
 

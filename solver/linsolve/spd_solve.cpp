@@ -57,11 +57,17 @@ void SpdSolve::factorise(const assembly::SparsePattern& pattern, const std::vect
     report.singular_equation = e.equation();
   }
   // Shift every diagonal by a tiny fraction of itself: the factorisation then exists, and the
-  // refinement in solve() recovers the solution of K itself wherever one exists.
+  // refinement in solve() recovers the solution of K itself wherever one exists. A zero
+  // diagonal is a dof nothing holds at all (a truss node across the plane of its bars; K is
+  // positive semi-definite, so its whole row is zero): it gets a fraction of the largest.
   std::vector<Real> shifted = values;
+  Real largest_diagonal = 0;
+  for (int j = 0; j < pattern.n; ++j)
+    largest_diagonal = std::max(largest_diagonal, std::abs(values[pattern.find(j, j)]));
   for (int j = 0; j < pattern.n; ++j) {
     const Index d = pattern.find(j, j);
-    shifted[d] += kStabilisation * std::max(std::abs(shifted[d]), 1e-300);
+    const Real own = std::abs(shifted[d]);
+    shifted[d] += kStabilisation * (own > 0 ? own : std::max(largest_diagonal, 1e-300));
   }
   try {
     solver_.factorize(shifted);

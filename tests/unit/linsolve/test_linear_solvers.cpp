@@ -130,6 +130,30 @@ TEST(SpdSolve, SolvesSingularSystemWhenTheLoadLeavesTheZeroModeAlone) {
   EXPECT_THROW(spd.solve(p, values, net, report), linsolve::SingularMatrix);
 }
 
+TEST(SpdSolve, ADofWithoutAnyStiffnessIsSolvedWhenUnloadedAndReportedWhenLoaded) {
+  // A truss joint across the plane of its bars: its row and column are exactly zero, so its
+  // own diagonal gives no scale for the shift.
+  MatX A(3, 3);
+  A << 4e6, 0, -1e6, 0, 0, 0, -1e6, 0, 3e6;
+  std::vector<Real> values;
+  const auto p = dense_pattern(A, true, values);
+  auto cholmod = linsolve::make_cholmod_solver();
+  cholmod->analyze(p);
+  linsolve::SpdSolve spd(*cholmod);
+  linsolve::SpdSolveReport report;
+  spd.factorise(p, values, report);
+  EXPECT_TRUE(report.stabilised);
+  EXPECT_EQ(report.singular_equation, 1);
+  VecX unloaded(3);
+  unloaded << 1, 0, 2;
+  const VecX x = spd.solve(p, values, unloaded, report);
+  EXPECT_LT((A * x - unloaded).norm(), 1e-8 * unloaded.norm());
+  EXPECT_EQ(x[1], 0.0);
+  VecX loaded(3);
+  loaded << 1, 1, 2;
+  EXPECT_THROW(spd.solve(p, values, loaded, report), linsolve::SingularMatrix);
+}
+
 TEST(SpdSolve, RegularSystemIsSolvedWithoutStabilisation) {
   const MatX A = spd_matrix(12);
   std::vector<Real> values;
