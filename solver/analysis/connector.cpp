@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "analysis/truss.hpp"
 #include "contact/pressure_overclosure.hpp"
 
 namespace kontakt::analysis {
@@ -10,11 +11,7 @@ namespace {
 
 /// Force and slope of a spring at elongation `e`: linear, or through the curve with constant
 /// ends (zero slope there); the energy from elongation 0, piecewise along the curve.
-struct SpringForce {
-  Real force = 0, slope = 0, energy = 0;
-};
-
-SpringForce spring_force(const model::Connector& c, Real e) {
+AxialForce spring_force(const model::Connector& c, Real e) {
   if (c.curve.empty()) return {c.stiffness * e, c.stiffness, 0.5 * c.stiffness * e * e};
   const auto& t = c.curve;
   auto at = [&](Real x) {  // force at elongation x, constant beyond the ends
@@ -25,7 +22,7 @@ SpringForce spring_force(const model::Connector& c, Real e) {
     const Real w = (x - t[k - 1].first) / (t[k].first - t[k - 1].first);
     return t[k - 1].second + w * (t[k].second - t[k - 1].second);
   };
-  SpringForce s;
+  AxialForce s;
   s.force = at(e);
   for (std::size_t k = 1; k < t.size(); ++k)  // segments [x_k-1, x_k): a kink takes the right
     if (e >= t[k - 1].first && e < t[k].first)
@@ -71,9 +68,14 @@ ConnectorResponse connector_response(const model::Connector& c, const Vec3& X1, 
   }
   const Vec3 L0 = X2 - X1;
   const Real length0 = L0.norm();
+  // Springs and trusses are the same axial member: only their force against elongation differs.
+  const auto axial_force = [&](Real elongation) {
+    return c.kind == model::Connector::Kind::Truss ? truss_axial_force(c, length0, elongation, nlgeom)
+                                                   : spring_force(c, elongation);
+  };
   if (!nlgeom) {  // small displacements: the initial direction
     const Vec3 n = L0 / length0;
-    const SpringForce s = spring_force(c, n.dot(u2 - u1));
+    const AxialForce s = axial_force(n.dot(u2 - u1));
     r.force << -s.force * n, s.force * n;
     r.stiffness = pair_stiffness(s.slope * n * n.transpose());
     r.energy = s.energy;
@@ -82,10 +84,11 @@ ConnectorResponse connector_response(const model::Connector& c, const Vec3& X1, 
   const Vec3 d = L0 + u2 - u1;
   const Real length = d.norm();
   if (!(length > 0))
-    throw SolverError("spring element " + std::to_string(c.id) +
+    throw SolverError(std::string(model::connector_type_name(c.kind)) + " element " +
+                      std::to_string(c.id) +
                       " has collapsed to a point: its direction is undefined");
   const Vec3 n = d / length;
-  const SpringForce s = spring_force(c, length - length0);
+  const AxialForce s = axial_force(length - length0);
   r.force << -s.force * n, s.force * n;
   const Mat3 nn = n * n.transpose();
   r.stiffness = pair_stiffness(s.slope * nn + s.force / length * (Mat3::Identity() - nn));

@@ -494,7 +494,7 @@ class NonlinearStatic {
     const bool at_time_point = increments_->ends_at_time_point();
     increments_->converged(it);
 
-    output::Frame frame = converged_frame(model_, u_, a.ev);
+    output::Frame frame = converged_frame(model_, u_, a.ev, sc.step->nlgeom);
     layout_.dofs().add_constraint_forces(frame.RF);
     frame.element_active = sc.step->element_active;
     frame.T = nodal_temperatures(model_, a.dT);

@@ -1,6 +1,9 @@
 #include "analysis/nonlinear_system.hpp"
 
+#include <algorithm>
+
 #include "analysis/connector.hpp"
+#include "analysis/truss.hpp"
 #include "analysis/element_access.hpp"
 #include "analysis/small_strain_frame.hpp"
 #include "element/solid_plastic.hpp"
@@ -65,6 +68,30 @@ void element_response(const model::Model& model, const model::Element& el, bool 
   // mechanical deformation gradient) and very slightly where points yield; the Cholesky
   // solver takes their symmetric part, which costs a little convergence rate there.
   if (nlgeom || plastic) *K = 0.5 * (*K + K->transpose()).eval();
+}
+
+/// The frame's truss rows (Frame::truss_S, ...), left empty without trusses.
+void truss_points(const model::Model& model, const VecX& u, bool nlgeom, output::Frame& frame) {
+  const auto& connectors = model.connectors;
+  if (std::none_of(connectors.begin(), connectors.end(),
+                   [](const auto& c) { return c.kind == model::Connector::Kind::Truss; }))
+    return;
+  const Index n = static_cast<Index>(connectors.size());
+  frame.truss_S = MatX6::Zero(n, 6);
+  frame.truss_E = MatX6::Zero(n, 6);
+  frame.truss_ENER = VecX::Zero(n);
+  for (Index k = 0; k < n; ++k) {
+    const model::Connector& c = connectors[static_cast<std::size_t>(k)];
+    if (c.kind != model::Connector::Kind::Truss) continue;
+    const auto& [a, b] = c.nodes;
+    const TrussPointOutput p =
+        truss_point_output(c, model.mesh.coords.row(a).transpose(),
+                           model.mesh.coords.row(b).transpose(), u.segment<3>(3 * a),
+                           u.segment<3>(3 * b), nlgeom);
+    frame.truss_S.row(k) = p.stress.transpose();
+    frame.truss_E.row(k) = p.strain.transpose();
+    frame.truss_ENER[k] = p.energy_density;
+  }
 }
 
 }  // namespace
@@ -170,7 +197,8 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
 }
 
 /// The output frame of a converged state from its last evaluation.
-output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev) {
+output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev,
+                              bool nlgeom) {
   output::Frame frame = sized_frame(model, u);
   frame.RF = Eigen::Map<const MatX3>(ev.internal_force.data(), model.n_nodes(), 3);
   model::fold_to_planar_nodes(model.planar_folds, frame.U, frame.RF);
@@ -189,6 +217,7 @@ output::Frame converged_frame(const model::Model& model, const VecX& u, const Ev
     frame.EVOL[e] = frame.ip_volume.segment(first, n).sum();
   }
   average_to_nodes(model, frame);
+  truss_points(model, u, nlgeom, frame);
   return frame;
 }
 

@@ -62,7 +62,8 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
                              const VecX& prescribed_step, LinearElementCache& cache, int threads);
 
 /// The output frame of a converged state from its last evaluation (stresses, strains,
-/// energies, PEEQ, volumes, reactions, nodal averages).
-output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev);
+/// energies, PEEQ, volumes, reactions, nodal averages, truss points).
+output::Frame converged_frame(const model::Model& model, const VecX& u, const Evaluation& ev,
+                              bool nlgeom);
 
 }  // namespace kontakt::analysis

@@ -36,10 +36,11 @@ std::vector<UnsupportedBody> unsupported_bodies(const model::Model& model,
     for (const auto& term : eq.terms) bodies.join(eq.terms.front().node, term.node);
   for (const auto& c : model.nonlinear_constraints)
     for (int node : c.nodes) bodies.join(c.nodes.front(), node);
-  // A spring joins its nodes into one body; a gap, like contact, only when contact holds.
+  // A spring or truss joins its nodes into one body; a gap, like contact, only when contact
+  // holds.
   for (const auto& c : model.connectors) {
     for (int node : c.nodes) in_element[node] = 1;
-    if (c.kind == model::Connector::Kind::Spring || contact_holds) bodies.join(c.nodes[0], c.nodes[1]);
+    if (c.kind != model::Connector::Kind::Gap || contact_holds) bodies.join(c.nodes[0], c.nodes[1]);
   }
   // Contact can hold a body against another: the two sides of a pair count as one body.
   if (contact_holds)

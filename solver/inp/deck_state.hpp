@@ -35,7 +35,8 @@ struct RawFace {
   int face = 0;
   int line_id = 0;
 };
-/// A SPRINGA or GAPUNI element as read; *SPRING / *GAP give it its law.
+/// A SPRINGA, GAPUNI or T3D2 element as read; *SPRING / *GAP / *SOLID SECTION give it its
+/// law.
 struct RawConnector {
   model::Connector::Kind kind = model::Connector::Kind::Spring;
   int label = 0;
@@ -83,6 +84,8 @@ struct RawSection {
   Real thickness = 1;
   Real offset = 0;
   std::string orientation;  ///< ORIENTATION= name; empty: none
+  /// The data line's first field as given, whatever its sign: a truss's cross-sectional area.
+  std::optional<Real> area;
 };
 
 /// Where the cards of a *SURFACE INTERACTION block were, for the end-of-deck resolution

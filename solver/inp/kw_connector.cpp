@@ -1,5 +1,6 @@
 // *SPRING and *GAP: the laws of SPRINGA and GAPUNI connectors (model::Connector), given to
-// their elements once the deck is read (resolve_connectors).
+// their elements once the deck is read (resolve_connectors). T3D2 trusses take theirs from
+// *SOLID SECTION (truss_builder.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -82,12 +83,14 @@ void resolve_connectors(DeckState& state) {
     if (c.nodes[0] == c.nodes[1])
       throw InputError(raw.where, "*ELEMENT",
                        "element " + std::to_string(raw.label) + " joins a node to itself");
-    if (c.kind == Connector::Kind::Spring &&
+    if (c.kind != Connector::Kind::Gap &&
         model.mesh.coords.row(c.nodes[0]) == model.mesh.coords.row(c.nodes[1]))
       throw InputError(raw.where, "*ELEMENT",
-                       "spring element " + std::to_string(raw.label) +
-                           " has zero length: its direction is undefined (SPRINGA acts along "
-                           "the line between its nodes)");
+                       std::string(c.kind == Connector::Kind::Spring ? "spring" : "truss") +
+                           " element " + std::to_string(raw.label) +
+                           " has zero length: its direction is undefined (" +
+                           std::string(model::connector_type_name(c.kind)) +
+                           " acts along the line between its nodes)");
     model.connectors.push_back(c);
   }
   std::vector<char> has_law(model.connectors.size(), 0);
@@ -101,8 +104,7 @@ void resolve_connectors(DeckState& state) {
       if (c.kind != law.law.kind)
         throw InputError(law.where, law.keyword,
                          "element " + std::to_string(label) + " of set " + law.elset + " is a " +
-                             (c.kind == Connector::Kind::Spring ? "SPRINGA" : "GAPUNI") +
-                             " element");
+                             std::string(model::connector_type_name(c.kind)) + " element");
       const Connector element = c;
       c = law.law;
       c.id = element.id;
@@ -112,7 +114,7 @@ void resolve_connectors(DeckState& state) {
     }
   }
   for (std::size_t k = 0; k < model.connectors.size(); ++k)
-    if (!has_law[k]) {
+    if (!has_law[k] && model.connectors[k].kind != Connector::Kind::Truss) {
       const Connector& c = model.connectors[k];
       throw InputError(c.where, "*ELEMENT",
                        "element " + std::to_string(c.id) + " has no " +

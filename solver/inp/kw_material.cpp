@@ -391,15 +391,16 @@ void handle_solid_section(const Record& record, DeckState& state) {
   // value <= 0 or none means 1); solids and axisymmetric elements do not use it.
   if (record.lines.size() > 1) fail(record, record.lines[1], "unexpected data line");
   Real thickness = 1;
+  std::optional<Real> area;
   if (!record.lines.empty() && !record.lines.front().fields.empty()) {
-    const Real given = real_field_or(record, record.lines.front(), 0, 0);
-    if (given > 0) thickness = given;
+    area = optional_real_field(record, record.lines.front(), 0);
+    if (area && *area > 0) thickness = *area;
   }
   const std::string elset = remove_blanks(to_upper(required_value(record, "ELSET")));
   const std::string material = remove_blanks(to_upper(required_value(record, "MATERIAL")));
   const std::string orientation = name_value(record, "ORIENTATION").value_or("");
   state.sections.push_back(
-      RawSection{elset, material, record.where, thickness, offset, orientation});
+      RawSection{elset, material, record.where, thickness, offset, orientation, area});
 }
 
 void handle_membrane(const Record& record, DeckState& state) {

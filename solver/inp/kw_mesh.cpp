@@ -149,7 +149,7 @@ void handle_node(const Record& record, DeckState& state) {
 
 namespace {
 
-/// SPRINGA and GAPUNI lines (label, node 1, node 2): connectors, not solid elements.
+/// SPRINGA, GAPUNI and T3D2 lines (label, node 1, node 2): connectors, not solid elements.
 void read_connectors(const Record& record, DeckState& state, model::Connector::Kind kind) {
   const std::optional<std::string> elset = name_value(record, "ELSET");
   if (elset) open_set(state.element_sets, *elset, record.where);
@@ -184,9 +184,10 @@ void read_coupling_elements(const Record& record, DeckState& state) {
 void handle_element(const Record& record, DeckState& state) {
   check_params(record, {"TYPE", "ELSET"});
   const std::string type_name = remove_blanks(required_value(record, "TYPE"));
-  if (const std::string upper = to_upper(type_name); upper == "SPRINGA" || upper == "GAPUNI")
-    return read_connectors(record, state, upper == "SPRINGA" ? model::Connector::Kind::Spring
-                                                              : model::Connector::Kind::Gap);
+  for (const auto kind : {model::Connector::Kind::Spring, model::Connector::Kind::Gap,
+                          model::Connector::Kind::Truss})
+    if (to_upper(type_name) == model::connector_type_name(kind))
+      return read_connectors(record, state, kind);
   if (to_upper(type_name) == "DCOUP3D") return read_coupling_elements(record, state);
   const std::optional<ElementName> type = find_element_name(type_name);
   if (!type) fail(record, "element type " + to_upper(type_name) + " is not supported");

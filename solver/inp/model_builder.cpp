@@ -122,7 +122,17 @@ std::vector<int> resolve_element_field(const DeckState& state, const Record& rec
   if (field >= line.fields.size() || line.fields[field].empty()) {
     fail(record, line, "field " + std::to_string(field + 1) + " (element or set) is missing");
   }
+  // Distributed loads (their only users here) would silently pass a truss by.
+  const auto refuse_trusses = [&](const std::vector<int>& labels) {
+    for (int label : labels)
+      if (const auto c = state.connector_index.find(label);
+          c != state.connector_index.end() &&
+          state.connectors[static_cast<std::size_t>(c->second)].kind == model::Connector::Kind::Truss)
+        fail(record, line, "element " + std::to_string(label) +
+                               " is a truss (T3D2): distributed loads on trusses are not supported");
+  };
   if (const std::optional<int> label = parse_int(line.fields[field])) {
+    refuse_trusses({*label});
     const auto found = state.model.mesh.element_index.find(*label);
     if (found == state.model.mesh.element_index.end()) {
       fail(record, line, "element " + std::to_string(*label) + " is not defined");
@@ -134,6 +144,7 @@ std::vector<int> resolve_element_field(const DeckState& state, const Record& rec
   if (set == state.element_sets.end()) {
     fail(record, line, "element set " + name + " is not defined");
   }
+  refuse_trusses(connector_labels(state, set->second));
   return element_set_members(state, set->second, name);
 }
 
@@ -220,6 +231,14 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
   for (const RawFace& face : raw.faces) {
     const SourceLoc& where = state.line_locs[static_cast<std::size_t>(face.line_id)];
     const auto found = mesh.element_index.find(face.element_label);
+    if (const auto c = state.connector_index.find(face.element_label);
+        c != state.connector_index.end())
+      throw InputError(where, "*SURFACE",
+                       "element " + std::to_string(face.element_label) + " is a " +
+                           std::string(model::connector_type_name(
+                               state.connectors[static_cast<std::size_t>(c->second)].kind)) +
+                           " element: it has no faces for a surface (contact on trusses, springs "
+                           "and gaps is not supported)");
     if (found == mesh.element_index.end()) {
       throw InputError(where, "*SURFACE",
                        "element " + std::to_string(face.element_label) + " is not defined");
@@ -512,6 +531,11 @@ void resolve_section_changes(DeckState& state) {
       const auto elset = model.element_sets.find(change.elset);
       if (elset == model.element_sets.end())
         refuse(change, "element set " + change.elset + " is not defined");
+      for (int label : connector_labels(state, state.element_sets.at(change.elset)))
+        if (model.connectors[static_cast<std::size_t>(state.connector_index.at(label))].kind ==
+            model::Connector::Kind::Truss)
+          refuse(change, "element " + std::to_string(label) +
+                             " is a truss (T3D2): its section cannot change (solids only)");
       for (int e : elset->second.elements) {
         int& section = sections[static_cast<std::size_t>(e)];
         if (section < 0) continue;  // no section before: the deck's own check reports it
@@ -556,6 +580,7 @@ model::Model finish_model(DeckState& state) {
   resolve_ties(state);
   resolve_rigid_bodies(state);
   resolve_connectors(state);
+  assign_truss_sections(state);
   resolve_couplings(state);
   resolve_section_changes(state);
   require_element_change_support(state);

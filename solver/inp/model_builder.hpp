@@ -30,7 +30,7 @@ std::vector<std::pair<int, int>> set_labels(const RawSet& set,
 
 /// Members of a set as internal indices, sorted by deck label and deduplicated; throws at the
 /// defining line of the first member that does not exist. Element sets leave out their
-/// SPRINGA, GAPUNI (connector_labels) and DCOUP3D elements.
+/// SPRINGA, GAPUNI, T3D2 (connector_labels) and DCOUP3D elements.
 std::vector<int> node_set_members(const DeckState& state, const RawSet& set,
                                   const std::string& name);
 std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
@@ -40,12 +40,16 @@ std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
 /// copy of the amplitude moved later in time by the delay.
 int amplitude_param(DeckState& state, const Record& record);
 
-/// The SPRINGA and GAPUNI labels of an element set (DeckState::connector_index).
+/// The SPRINGA, GAPUNI and T3D2 labels of an element set (DeckState::connector_index).
 std::vector<int> connector_labels(const DeckState& state, const RawSet& set);
 
 /// Builds Model::connectors from their *ELEMENT lines and their *SPRING / *GAP laws
 /// (kw_connector.cpp).
 void resolve_connectors(DeckState& state);
+
+/// Gives each T3D2 truss of Model::connectors its material and cross-sectional area from the
+/// last *SOLID SECTION naming it, refusing what a truss cannot carry (truss_builder.cpp).
+void assign_truss_sections(DeckState& state);
 
 /// Turns each *DISTRIBUTING COUPLING into three equations (kw_coupling.cpp).
 void resolve_couplings(DeckState& state);

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -161,9 +162,12 @@ struct Equation {
 };
 
 /// A two-node element outside the solid library, assembled as a node pair
-/// (analysis/connector): a SPRINGA spring (*SPRING) or a GAPUNI gap (*GAP).
+/// (analysis/connector): a SPRINGA spring (*SPRING), a GAPUNI gap (*GAP) or a T3D2 truss
+/// (*SOLID SECTION with the cross-sectional area).
+/// A truss is a connector, not a solid element family: it is the spring's axial member with
+/// another force law, and node pairs already assemble, count as support and print here.
 struct Connector {
-  enum class Kind { Spring, Gap };
+  enum class Kind { Spring, Gap, Truss };
   Kind kind = Kind::Spring;
   int id = 0;                     ///< deck label
   std::array<int, 2> nodes{};     ///< internal indices
@@ -178,8 +182,15 @@ struct Connector {
   Real clearance = 0;
   Vec3 direction = Vec3::UnitX();
   Real tension = 0;
+  /// Truss: an isotropic elastic bar of cross-section `area` (a St. Venant-Kirchhoff bar under
+  /// NLGEOM, as ccx's expanded element behaves; analysis/truss).
+  Real area = 0;
+  Real young = 0, poisson = 0;
   SourceLoc where;                ///< its *ELEMENT line
 };
+
+/// The deck's name of a connector kind: SPRINGA, GAPUNI, T3D2.
+std::string_view connector_type_name(Connector::Kind kind);
 
 /// A nonlinear multiple point constraint g(u) = 0 over the dofs of a few nodes, solved for
 /// one dependent dof (*RIGID BODY, *MPC PLANE / STRAIGHT / MEANROT;

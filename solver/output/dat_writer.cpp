@@ -77,6 +77,12 @@ DatWriter::DatWriter(const model::Model& model, std::filesystem::path path)
   for (int label : model.mesh.node_ids) largest_node_label_ = std::max(largest_node_label_, label);
   for (const model::Element& el : model.mesh.elements)
     largest_element_label_ = std::max(largest_element_label_, el.id);
+  for (std::size_t k = 0; k < model.connectors.size(); ++k) {
+    const model::Connector& c = model.connectors[k];
+    if (c.kind != model::Connector::Kind::Truss) continue;
+    truss_index_.emplace(c.id, static_cast<int>(k));
+    largest_element_label_ = std::max(largest_element_label_, c.id);
+  }
 }
 
 void DatWriter::header(std::string_view prefix, const std::string& set, const Frame& f) {
@@ -157,27 +163,53 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
   if (it == model_.element_sets.end())
     throw SolverError("*EL PRINT: unknown element set " + r.set);
   const auto& mesh = model_.mesh;
-  // Labels without an element print nothing (ccx).
-  std::vector<int> elems;
+  // Labels without an element or truss print nothing (ccx).
+  std::vector<int> elems;  // solid elements; trusses as -2 - their connector index
   for (const auto& [label, e] : print_rows(it->second.print_order, it->second.elements,
                                            mesh.element_index, largest_element_label_, [&](int e) {
                                              return mesh.elements[static_cast<std::size_t>(e)].id;
-                                           }))
+                                           })) {
     if (e >= 0 && (f.element_active.empty() || f.element_active[static_cast<std::size_t>(e)]))
       elems.push_back(e);
+    else if (const auto truss = truss_index_.find(label); e < 0 && truss != truss_index_.end())
+      elems.push_back(-2 - truss->second);
+  }
+  const auto truss_of = [](int e) { return static_cast<Index>(-2 - e); };
+  // ccx prints a truss at the 8 points of its expanded element, all alike here.
+  constexpr int kTrussPoints = 8;
+  const auto need_truss_rows = [&](Index rows) {
+    KONTAKT_REQUIRE(rows == static_cast<Index>(model_.connectors.size()),
+                    "DatWriter: frame has no truss rows");
+  };
+  const auto truss_label = [&](int e) {
+    return model_.connectors[static_cast<std::size_t>(truss_of(e))].id;
+  };
   const auto need_ip = [&](Index rows) {
     KONTAKT_REQUIRE(f.ip_offset.size() == static_cast<std::size_t>(model_.n_elements()) + 1,
                     "DatWriter: frame ip_offset has wrong size");
     KONTAKT_REQUIRE(rows == f.ip_offset.back(), "DatWriter: point array has wrong size");
   };
   const auto label = [&](int e) { return mesh.elements[static_cast<std::size_t>(e)].id; };
+  const auto truss_volume = [&](int e) {  // initial: A L
+    const model::Connector& c = model_.connectors[static_cast<std::size_t>(truss_of(e))];
+    return c.area * (mesh.coords.row(c.nodes[1]) - mesh.coords.row(c.nodes[0])).norm();
+  };
 
   // (i10,1x,i3,1p,n(1x,e13.6))
   // Tensors (S, E) of an element with an *ORIENTATION print in its frame unless GLOBAL=YES,
   // each row followed by the orientation's name in 20 columns (ccx).
-  auto ip_rows6 = [&](const MatX6& m) {
+  auto ip_rows6 = [&](const MatX6& m, const MatX6& truss_m) {
     need_ip(m.rows());
     for (int e : elems) {
+      if (e < 0) {
+        need_truss_rows(truss_m.rows());
+        for (int p = 1; p <= kTrussPoints; ++p) {
+          out_ << i10(truss_label(e)) << ' ' << i3(p);
+          for (int c = 0; c < 6; ++c) out_ << ' ' << fortran_e13_6(truss_m(truss_of(e), c));
+          out_ << '\n';
+        }
+        continue;
+      }
       const Index b = f.ip_offset[static_cast<std::size_t>(e)];
       const Index en = f.ip_offset[static_cast<std::size_t>(e) + 1];
       const model::Element& el = mesh.elements[static_cast<std::size_t>(e)];
@@ -205,9 +237,16 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
       }
     }
   };
-  auto ip_rows1 = [&](const VecX& v) {
+  // `truss_v` empty: zero at trusses (PEEQ)
+  auto ip_rows1 = [&](const VecX& v, const VecX& truss_v) {
     need_ip(v.size());
     for (int e : elems) {
+      if (e < 0) {
+        const Real value = truss_v.size() ? truss_v(truss_of(e)) : 0.0;
+        for (int p = 1; p <= kTrussPoints; ++p)
+          out_ << i10(truss_label(e)) << ' ' << i3(p) << ' ' << fortran_e13_6(value) << '\n';
+        continue;
+      }
       const Index b = f.ip_offset[static_cast<std::size_t>(e)];
       const Index en = f.ip_offset[static_cast<std::size_t>(e) + 1];
       for (Index p = b; p < en; ++p)
@@ -222,7 +261,7 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
       const Real v = value_of(e);
       total += v;
       if (r.totals != model::Totals::Only)
-        out_ << i10(label(e)) << ' ' << fortran_e13_6(v) << '\n';
+        out_ << i10(e < 0 ? truss_label(e) : label(e)) << ' ' << fortran_e13_6(v) << '\n';
     }
     if (r.totals != model::Totals::No) {
       header(dat_header_prefix(total_block), r.set, f);
@@ -233,21 +272,25 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
   for (const auto& var : r.variables) {
     if (var == "S") {
       header(dat_header_prefix(DatBlock::S), r.set, f);
-      ip_rows6(f.S);
+      ip_rows6(f.S, f.truss_S);
     } else if (var == "E") {
       header(dat_header_prefix(DatBlock::E), r.set, f);
-      ip_rows6(f.E);
+      ip_rows6(f.E, f.truss_E);
     } else if (var == "ENER") {
       header(dat_header_prefix(DatBlock::ENER), r.set, f);
-      ip_rows1(f.ENER);
+      ip_rows1(f.ENER, f.truss_ENER);
     } else if (var == "PEEQ") {
       if (f.PEEQ.size() == 0) continue;  // ccx prints no PEEQ block for elastic models
       header(dat_header_prefix(DatBlock::PEEQ), r.set, f);
-      ip_rows1(f.PEEQ);
+      ip_rows1(f.PEEQ, VecX());
     } else if (var == "ELSE") {
       need_ip(f.ENER.size());
       KONTAKT_REQUIRE(f.ip_volume.size() == f.ENER.size(), "DatWriter: ip_volume has wrong size");
       per_element(DatBlock::ELSE, DatBlock::ELSE_TOTAL, [&](int e) {
+        if (e < 0) {
+          need_truss_rows(f.truss_ENER.size());
+          return f.truss_ENER(truss_of(e)) * truss_volume(e);
+        }
         Real s = 0;
         for (Index p = f.ip_offset[static_cast<std::size_t>(e)];
              p < f.ip_offset[static_cast<std::size_t>(e) + 1]; ++p)
@@ -256,7 +299,8 @@ void DatWriter::element_request(const model::PrintRequest& r, const Frame& f) {
       });
     } else if (var == "EVOL") {
       KONTAKT_REQUIRE(f.EVOL.size() == model_.n_elements(), "DatWriter: EVOL has wrong size");
-      per_element(DatBlock::EVOL, DatBlock::EVOL_TOTAL, [&](int e) { return f.EVOL(e); });
+      per_element(DatBlock::EVOL, DatBlock::EVOL_TOTAL,
+                  [&](int e) { return e < 0 ? truss_volume(e) : f.EVOL(e); });
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unordered_map>
 
 #include "model/model.hpp"
 #include "output/frame.hpp"
@@ -49,6 +50,9 @@ class DatWriter {
   std::filesystem::path path_;
   std::ofstream out_;
   int largest_node_label_ = 0, largest_element_label_ = 0;  ///< where print orders stop (ccx)
+  /// T3D2 truss label -> Model::connectors index: *EL PRINT lists a truss's rows (Frame::
+  /// truss_S, ...) where its set has it, as ccx does its expanded element.
+  std::unordered_map<int, int> truss_index_;
 };
 
 }  // namespace kontakt::output

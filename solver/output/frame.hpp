@@ -67,6 +67,11 @@ struct Frame {
   MatX6 S_nodal, E_nodal;
   /// PEEQ extrapolated and averaged the same way; empty when PEEQ is.
   VecX PEEQ_nodal;
+  /// One row per Model::connectors entry: what a T3D2 truss prints at each of the 8 points of
+  /// ccx's expanded element (analysis/truss; rows of springs and gaps stay zero). Empty for a
+  /// model without trusses. The HDF5 and .frd files leave trusses out, as all connectors.
+  MatX6 truss_S, truss_E;
+  VecX truss_ENER;
   /// Nodal temperatures at the frame's time (n_nodes); empty for a model without temperatures.
   VecX T;
   /// Per element: 0 for one *MODEL CHANGE removed (the .dat prints no rows for it, as ccx);

@@ -29,6 +29,9 @@ std::vector<BadDeck> coupling_bad_decks();
 /// The SPRINGA, GAPUNI, *SPRING and *GAP cases (test_connector.cpp).
 std::vector<BadDeck> connector_bad_decks();
 
+/// The T3D2 truss cases (test_truss.cpp).
+std::vector<BadDeck> truss_bad_decks();
+
 /// The *RIGID BODY and *MPC cases (test_nonlinear_constraint.cpp).
 std::vector<BadDeck> nonlinear_constraint_bad_decks();
 

@@ -169,6 +169,8 @@ INSTANTIATE_TEST_SUITE_P(MalformedCoupling, inpErrors,
                          ::testing::ValuesIn(test::coupling_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedConnector, inpErrors,
                          ::testing::ValuesIn(test::connector_bad_decks()), case_name);
+INSTANTIATE_TEST_SUITE_P(MalformedTruss, inpErrors,
+                         ::testing::ValuesIn(test::truss_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedNonlinearConstraint, inpErrors,
                          ::testing::ValuesIn(test::nonlinear_constraint_bad_decks()), case_name);
 INSTANTIATE_TEST_SUITE_P(MalformedPretension, inpErrors,
