@@ -234,6 +234,40 @@ TEST(DatWriter, SetsPrintInTheirDeckOrderWithDuplicatesAndZeroRowsUpToTheLargest
       << slurp(path);
 }
 
+TEST(DatWriter, TrussesPrintEightRowsWhereTheirSetListsThem) {
+  auto m = test::two_tets();
+  model::Connector bar;  // truss 9 from node 10 to node 20 (length 1), between the tets
+  bar.kind = model::Connector::Kind::Truss;
+  bar.id = 9;
+  bar.nodes = {0, 1};
+  bar.area = 0.5;
+  m.connectors.push_back(bar);
+  m.element_sets["EALL"].print_order = {{7, 7, 1}, {9, 9, 1}, {8, 8, 1}};
+  auto& step = m.steps[0];
+  step.prints = {elem("EALL", {"S", "ELSE", "EVOL"})};
+  auto f = two_tet_frame();
+  f.truss_S = MatX6::Zero(1, 6);
+  f.truss_S(0, 0) = 7.5;
+  f.truss_E = MatX6::Zero(1, 6);
+  f.truss_ENER = VecX::Constant(1, 3.0);
+  const auto path = tmp("truss.dat");
+  {
+    DatWriter w(m, path);
+    w.write(step, f);
+  }
+  const std::string text = slurp(path);
+  std::string truss_rows;
+  for (int p = 1; p <= 8; ++p)
+    truss_rows += "         9   " + std::to_string(p) +
+                  "  7.500000E+00  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00  "
+                  "0.000000E+00\n";
+  // in the set's order: element 7, truss 9, element 8
+  EXPECT_NE(text.find("6.000000E+03\n" + truss_rows + "         8   1"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\n         9  1.500000E+00\n"), std::string::npos) << text;  // ELSE
+  EXPECT_NE(text.find("\n         9  5.000000E-01\n"), std::string::npos) << text;  // EVOL
+}
+
 TEST(DatWriter, UnknownSetThrows) {
   auto m = test::two_tets();
   m.steps[0].prints = {node("NOPE", {"U"})};
