@@ -9,8 +9,8 @@ the FIRST check a deck breaks is its exclusion reason:
 
   (a) every *ELEMENT has TYPE= one of ELEMENT_TYPES
       (C3D4 C3D6 C3D8 C3D8R C3D8I C3D10 C3D15 C3D20 C3D20R, the plane stress, plane strain
-      and axisymmetric CPS/CPE/CAX 3, 4, 4R, 6, 8, 8R, the SPRINGA and GAPUNI connectors and
-      the DCOUP3D reference element);
+      and axisymmetric CPS/CPE/CAX 3, 4, 4R, 6, 8, 8R, the SPRINGA and GAPUNI connectors, the
+      T3D2 truss and the DCOUP3D reference element);
   (b) every keyword is in SUPPORTED_KEYWORDS, within these limits:
       - no parameter in FORBIDDEN_PARAMETERS (USER) on any keyword;
       - *ELASTIC: TYPE= absent, ISO, ORTHO, ENGINEERING CONSTANTS or ANISO; *EXPANSION: TYPE=
@@ -86,7 +86,7 @@ import sys
 DEFAULT_SUITE = "/usr/share/doc/calculix-ccx-test/examples/test"
 
 ELEMENT_TYPES = {"C3D4", "C3D6", "C3D8", "C3D8R", "C3D8I", "C3D10", "C3D15", "C3D20", "C3D20R",
-                 "SPRINGA", "GAPUNI", "DCOUP3D"} | {
+                 "SPRINGA", "GAPUNI", "T3D2", "DCOUP3D"} | {
     f"{kind}{shape}" for kind in ("CPS", "CPE", "CAX") for shape in ("3", "4", "4R", "6", "8", "8R")}
 SUPPORTED_KEYWORDS = {
     "HEADING", "NODE", "ELEMENT", "NSET", "ELSET", "SURFACE", "MATERIAL", "ELASTIC", "DENSITY",

@@ -135,7 +135,11 @@ class SelectDecks(unittest.TestCase):
                  "*RIGID BODY without REF NODE= and ROT NODE="),
                 ("*RIGID BODY, NSET=NALL, REF NODE=9, ROT NODE=10\n", None, "no NLGEOM step"),
                 ("*ELEMENT, TYPE=SPRINGA, ELSET=S\n2, 1, 9\n*SPRING, ELSET=S\n\n10.\n", None,
-                 "no NLGEOM step")]:
+                 "no NLGEOM step"),
+                ("*ELEMENT, TYPE=T3D2, ELSET=T\n2, 1, 9\n*SOLID SECTION, ELSET=T, MATERIAL=M\n"
+                 "0.5\n", None, "no NLGEOM step"),
+                ("*ELEMENT, TYPE=T3D3, ELSET=T\n2, 1, 9, 10\n", "element T3D3",
+                 "element T3D3")]:
             with self.subTest(card=card):
                 text = GOOD.replace(model_end, model_end + card)
                 self.assertEqual(exclusion_reason(self.deck(text)), linear)
