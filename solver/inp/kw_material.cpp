@@ -388,7 +388,8 @@ void handle_solid_section(const Record& record, DeckState& state) {
     offset = *value;
   }
   // The data line's first field is the thickness of plane stress / strain elements (ccx: a
-  // value <= 0 or none means 1); solids and axisymmetric elements do not use it.
+  // value <= 0 or none means 1) and the cross-sectional area of trusses (kept as given, for
+  // truss_builder to check); solids and axisymmetric elements do not use it.
   if (record.lines.size() > 1) fail(record, record.lines[1], "unexpected data line");
   Real thickness = 1;
   std::optional<Real> area;
