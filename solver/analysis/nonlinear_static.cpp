@@ -518,7 +518,7 @@ class NonlinearStatic {
     if (!contact_.empty()) {
       // The energy the contact stabilisation absorbed beside the strain energy (Abaqus: ALLSD
       // and ALLIE); what the increment commits is the unstabilised equilibrium either way.
-      const Real strain_energy = frame.ENER.dot(frame.ip_volume);
+      const Real strain_energy = frame.ENER.dot(frame.ip_volume) + a.ev.connector_energy;
       step_stabilisation_energy_ += stabilisation_.absorbed_energy();
       increment.stabilisation_energy = stabilisation_.absorbed_energy();
       increment.strain_energy = strain_energy;

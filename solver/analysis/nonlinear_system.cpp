@@ -192,6 +192,7 @@ Evaluation evaluate_elements(const model::Model& model, const assembly::Assembly
     ev.internal_force.segment<3>(3 * b) += r.force.tail<3>();
     ev.force_abs_sum += r.force.cwiseAbs().sum();
     ev.force_components += 6;
+    ev.connector_energy += r.energy;
   }
   return ev;
 }

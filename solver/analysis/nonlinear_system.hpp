@@ -41,6 +41,7 @@ struct Evaluation {
   VecX internal_force;             ///< full dof vector (reaction forces at constrained dofs)
   Real force_abs_sum = 0;          ///< sum of |element nodal force component| (ccx's q_bar)
   Index force_components = 0;      ///< ... and their number
+  Real connector_energy = 0;       ///< stored in springs, gaps and trusses
   std::vector<ElementOutput> outputs;
 };
 

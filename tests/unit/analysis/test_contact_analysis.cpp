@@ -175,3 +175,35 @@ TEST(ContactStabilisation, AnUnloadedBodyOverAGapIsSolvedWithAWarningNamingTheDo
   EXPECT_TRUE(warned);
   EXPECT_LT(c.frames.back().U.cwiseAbs().maxCoeff(), 1e-12);
 }
+
+TEST(ContactStabilisation, TheReportedStrainEnergyCountsTheSprings) {
+  // The increment's strain energy (beside the stabilisation's) is the elements' and the
+  // connectors': a spring from the lower block's first node to the upper block's last.
+  contact::fixtures::TwoBlocks t;
+  t.upper = {"C3D8", 2, 1};
+  t.lower = {"C3D8", 3, 1};
+  t.pressure = 1;
+  model::Model m =
+      contact::fixtures::two_blocks_model(t, 1e7, *model::contact_scheme_from_name("lgc7"));
+  model::Connector spring;
+  spring.id = 9999;
+  spring.nodes = {0, m.n_nodes() - 1};
+  spring.stiffness = 50;
+  m.connectors.push_back(spring);
+  Collect c;
+  analysis::run_nonlinear_static(m, {}, c, c);
+  const output::Frame& f = c.frames.back();
+  const auto& [a, b] = spring.nodes;
+  const Vec3 X = m.mesh.coords.row(b) - m.mesh.coords.row(a);
+  const Vec3 du = f.U.row(b) - f.U.row(a);
+  const Real elongation =
+      m.steps[0].nlgeom ? (X + du).norm() - X.norm() : X.normalized().dot(du);
+  const Real spring_energy = 0.5 * spring.stiffness * elongation * elongation;
+  ASSERT_GT(spring_energy, 0);
+  const analysis::Event* last = nullptr;
+  for (const auto& e : c.events)
+    if (e.kind == analysis::Event::Kind::Increment) last = &e;
+  ASSERT_NE(last, nullptr);
+  EXPECT_NEAR(last->strain_energy - f.ENER.dot(f.ip_volume), spring_energy,
+              1e-9 * last->strain_energy);
+}
