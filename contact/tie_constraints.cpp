@@ -270,7 +270,8 @@ std::map<int, std::optional<model::EquationTerm>> expansion_followers(const mode
     const model::EquationTerm& lead = eq.terms.front();
     std::optional<model::EquationTerm> followed;
     if (eq.terms.size() == 2)
-      followed = model::EquationTerm{eq.terms[1].node, eq.terms[1].dof, -eq.terms[1].coef / lead.coef};
+      followed = model::EquationTerm{eq.terms[1].node, eq.terms[1].dof,
+                                     -eq.terms[1].coef / lead.coef};
     out[3 * lead.node + lead.dof] = followed;
   }
   return out;

@@ -233,7 +233,8 @@ TEST(PlaneElements, PlateOnARigidBodyTurnsRigidly) {
       const int n = m.mesh.node_index.at(k + 1);
       const Vec3 X = m.mesh.coords.row(n).transpose();
       const Vec3 expected = center + shift + R * (X - center) - X;
-      EXPECT_NEAR((f.U.row(n).transpose() - expected).norm(), 0, 1e-10) << type << " node " << k + 1;
+      EXPECT_NEAR((f.U.row(n).transpose() - expected).norm(), 0, 1e-10)
+          << type << " node " << k + 1;
     }
     EXPECT_LT(f.S.cwiseAbs().maxCoeff(), 1e-6) << type;
   }
