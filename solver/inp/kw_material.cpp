@@ -1,6 +1,7 @@
 // *MATERIAL, *ELASTIC, *HYPERELASTIC, *HYPERFOAM, *DENSITY, *EXPANSION, *SOLID SECTION,
 // *MEMBRANE, *ORIENTATION.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -153,6 +154,20 @@ Real default_compressibility(Real shear_modulus, std::size_t k) {
   return std::pow(0.1 / shear_modulus, static_cast<Real>(k));
 }
 
+/// D_1..D_n from values[first..]: not negative, a 0 taking ccx's default for `shear_modulus`.
+void read_compressibilities(const Record& record, const std::vector<Real>& values,
+                            std::size_t first, std::size_t n, Real shear_modulus,
+                            std::array<Real, 3>& d) {
+  for (std::size_t k = 0; k < n; ++k) {
+    d[k] = values[first + k];
+    if (d[k] < 0)
+      fail(record, constant_line(record, first + k),
+           "D" + std::to_string(k + 1) + " (" + constant_field(first + k) +
+               ") must not be negative");
+    if (d[k] == 0) d[k] = default_compressibility(shear_modulus, k + 1);
+  }
+}
+
 /// The N (mu_i, alpha_i) pairs leading OGDEN's and HYPERFOAM's constants: alpha_i nonzero and
 /// the shear modulus at rest, sum mu_i, positive. Returns that modulus.
 template <class Potential>
@@ -181,14 +196,7 @@ material::Ogden read_ogden(const Record& record, int n) {
   const std::vector<Real> values = hyperelastic_constants(record, 3 * n_terms);
   material::Ogden p;
   const Real shear_modulus = read_stretch_terms(record, values, n, p);
-  for (std::size_t k = 0; k < n_terms; ++k) {
-    p.d[k] = values[2 * n_terms + k];
-    if (p.d[k] < 0)
-      fail(record, constant_line(record, 2 * n_terms + k),
-           "D" + std::to_string(k + 1) + " (" + constant_field(2 * n_terms + k) +
-               ") must not be negative");
-    if (p.d[k] == 0) p.d[k] = default_compressibility(shear_modulus, k + 1);
-  }
+  read_compressibilities(record, values, 2 * n_terms, n_terms, shear_modulus, p.d);
   return p;
 }
 
@@ -236,14 +244,8 @@ void handle_hyperelastic(const Record& record, DeckState& state) {
   // Stable at rest: shear modulus 2 (C10 + C01) > 0.
   if (!(p.c[1][0] + p.c[0][1] > 0))
     fail(record, record.lines.front(), "C10 + C01 (half the shear modulus) must be positive");
-  for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
-    const std::size_t index = c_terms.size() + k;
-    p.d[k] = values[index];
-    if (p.d[k] < 0)
-      fail(record, constant_line(record, index),
-           "D" + std::to_string(k + 1) + " (" + constant_field(index) + ") must not be negative");
-    if (p.d[k] == 0) p.d[k] = default_compressibility(2 * (p.c[1][0] + p.c[0][1]), k + 1);
-  }
+  read_compressibilities(record, values, c_terms.size(), static_cast<std::size_t>(n),
+                         2 * (p.c[1][0] + p.c[0][1]), p.d);
   set_potential(record, state, p);
 }
 
