@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <span>
 #include <sstream>
 
 #include "contact/contact_extrapolation.hpp"
@@ -173,7 +174,7 @@ Real ContactSystem::point_area(const Unit& unit, const Point& pt, const UnitGeom
   // Node-to-surface: ccx's nodal share of the faces at the node (for a node-based slave
   // surface, the exterior faces of the mesh there, as ccx 2.20 computes it).
   if (unit.node < 0) return pt.ref_weight * surface_point(g.slave, pt.xi_s).jacobian;
-  return nodal_area(pairs_[unit.pair], unit.node, u);
+  return pt.ref_weight * nodal_area(pairs_[unit.pair], unit.node, u);
 }
 
 std::vector<AabbTree> ContactSystem::master_trees(const VecX& u) const {
@@ -254,7 +255,15 @@ void ContactSystem::build_points(Unit& unit, const VecX& u, const OldStates& old
                       : std::nullopt;
   unit.points.clear();
   if (unit.node >= 0) {
-    unit.points.push_back({.ref_weight = nodal_area(pair, unit.node, u)});
+    // A node over an edge or vertex of the master surface presses on each face there with its
+    // share of the nodal area (find_tied_masters); pair_point keeps each share on its face.
+    std::vector<const FaceGeometry*> c;
+    for (const auto& m : g.masters) c.push_back(&m);
+    const std::vector<MasterFoot> feet = find_tied_masters(g.slave.x.row(0).transpose(), c);
+    const int shares = std::max(1, static_cast<int>(feet.size()));
+    for (int k = 0; k < shares; ++k)
+      unit.points.push_back({.ref_weight = Real(1) / shares,
+                             .pairing = {.master = feet.empty() ? -1 : feet[k].candidate}});
   } else {
     const SurfaceFace& face = pair.slave.faces[unit.face];
     const std::vector<SlavePointSeed> seeds =
@@ -305,7 +314,7 @@ void ContactSystem::build_points(Unit& unit, const VecX& u, const OldStates& old
   std::vector<Vec2> xi;
   for (const Point& pt : unit.points) xi.push_back(pt.xi_s);
   const MatX moved =
-      unit.node >= 0 ? old.states.topRows(1)
+      unit.node >= 0 ? MatX(old.states.colwise().mean())  // the node's shares, averaged
                      : transfer_states(pair.slave.faces[unit.face].topo, old.xi, old.states,
                                        old.corners, xi);
   for (std::size_t k = 0; k < unit.points.size(); ++k) {
@@ -378,8 +387,9 @@ ContactSystem::Pairing ContactSystem::pair_point(const Unit& unit, const UnitGeo
     // clearance (c0 sqrt(A)), judged at pairing and kept until the next pairing, and so is
     // its area (as ccx regenerates its node-to-face elements).
     p.area = point_area(unit, pt, g, u);
-    p.exists = is_active(pair.law, -(p.gap + gap_offset(pt)),
-                         creation_clearance(pair.behavior, p.area));
+    // A node's clearance is its whole area's, whatever share of it this point carries.
+    const Real area = unit.node >= 0 ? p.area / pt.ref_weight : p.area;
+    p.exists = is_active(pair.law, -(p.gap + gap_offset(pt)), creation_clearance(pair.behavior, area));
   }
   return p;
 }
@@ -543,6 +553,12 @@ ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool
       sums.min_open_gap = std::min(sums.min_open_gap, spring_gap);
     if (pair.friction && pt.frozen_master >= 0) add_point_friction(unit, g, pt, pressed ? &r : nullptr, sums);
   }
+  if (unit.node >= 0) {  // a node counts once, however many faces its shares press on
+    sums.active = std::min(sums.active, 1);
+    sums.pressing = std::min(sums.pressing, 1);
+    sums.slipping = std::min(sums.slipping, 1);
+    sums.sticking = sums.slipping > 0 ? 0 : std::min(sums.sticking, 1);
+  }
   return sums;
 }
 
@@ -670,6 +686,34 @@ constexpr Real kMissedRedoFactor = 0.5;
 /// increment on the Hertz model), so one redo aims at 80 % of the tolerance.
 Real drift_redo_factor(Real drift) {
   return std::clamp(std::sqrt(0.8 * kDriftTolerance / drift), 0.25, 0.75);
+}
+
+/// One slave node's record from the records of its shares (find_tied_masters): areas and
+/// energies add up, the rest is averaged by area; active or slipping when any share is.
+output::ContactPointRecord node_record(std::span<const output::ContactPointRecord> shares) {
+  output::ContactPointRecord r = shares.front();
+  r.area = r.energy = r.clearance = r.pressure = 0;
+  r.slip = r.shear = Vec2::Zero();
+  r.active = false;
+  bool slipping = false, sticking = false;
+  for (const auto& s : shares) {
+    r.area += s.area;
+    r.energy += s.energy;
+    r.clearance += s.area * s.clearance;
+    r.pressure += s.area * s.pressure;
+    r.slip += s.area * s.slip;
+    r.shear += s.area * s.shear;
+    r.active |= s.active;
+    slipping |= s.active && !s.sticking;
+    sticking |= s.sticking;
+  }
+  const Real w = r.area > 0 ? 1 / r.area : 0;
+  r.clearance *= w;
+  r.pressure *= w;
+  r.slip *= w;
+  r.shear *= w;
+  r.sticking = sticking && !slipping;
+  return r;
 }
 
 }  // namespace
@@ -817,8 +861,15 @@ void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {
         r.sticking = pt.committed.active && !pt.committed.slipping;
       }
       frame.contact_points.push_back(r);
-      frame.n_active_contact += pt.committed.active;
     }
+    if (unit.node >= 0 && unit.points.size() > 1) {
+      const auto shares = frame.contact_points.end() - static_cast<std::ptrdiff_t>(unit.points.size());
+      *shares = node_record(std::span(shares, frame.contact_points.end()));
+      frame.contact_points.erase(shares + 1, frame.contact_points.end());
+    }
+    if (unit.node >= 0) frame.n_active_contact += frame.contact_points.back().active;
+    else
+      for (const Point& pt : unit.points) frame.n_active_contact += pt.committed.active;
     // Slave nodes that project onto no master face get no extrapolated values (thesis §4.3.2).
     if (unit.node >= 0) {
       on_slave[unit.node] = 1;

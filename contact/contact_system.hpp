@@ -203,7 +203,7 @@ class ContactSystem {
   };
   struct Point {
     Vec2 xi_s = Vec2::Zero();
-    Real ref_weight = 0;        ///< area = ref_weight * |J_slave(xi_s)|; NTS: the nodal area
+    Real ref_weight = 0;        ///< area = ref_weight * |J_slave(xi_s)|; NTS: share of the nodal area
     Pairing pairing{};
     /// The pairing at begin_increment, frozen (foot weights, normal, area): what the linear
     /// variants evaluate, and where every scheme's stabilisation spring and friction act.

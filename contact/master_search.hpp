@@ -28,4 +28,16 @@ inline constexpr Real kEdgeTolerance = 0.05;
 /// found (a foot lies in its face's box): only the faces near the point are projected on.
 MasterFoot find_master(const Vec3& p, std::span<const FaceGeometry* const> candidates);
 
+/// Feet at one distance: within this fraction of the nearest face's size.
+inline constexpr Real kTieTolerance = 1e-6;
+
+/// The nearest foot (as find_master) and the feet on every other candidate `p` projects into at
+/// the same distance, one per plane: a point on the bisector of an edge or a vertex of a
+/// faceted master surface. Which of those faces find_master picks is a matter of order, and
+/// picking one tilts the force by half the angle between the faces: over a conforming mesh of a
+/// curved surface every node tilts the same way (two rings pressed together turned 1e-5 against
+/// each other). Empty when p projects into no candidate.
+std::vector<MasterFoot> find_tied_masters(const Vec3& p,
+                                          std::span<const FaceGeometry* const> candidates);
+
 }  // namespace kontakt::contact

@@ -2,14 +2,17 @@
 // force against finite differences of the assembled tangent for every scheme, and pairing.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <map>
 #include <random>
+#include <sstream>
 #include <tuple>
 
 #include "contact/adjust_nodes.hpp"
 #include "contact/contact_system.hpp"
 #include "contact/contact_surface.hpp"
+#include "contact/pressure_overclosure.hpp"
 #include "two_blocks.hpp"
 
 using namespace kontakt;
@@ -268,6 +271,69 @@ TEST(ContactSystem, OutputShowsTheCommittedStateAndRollBackDropsTheTrial) {
   for (const auto& r : committed_points(sys, u)) {
     EXPECT_TRUE(r.active);
     EXPECT_NEAR(r.pressure, 1e5 * 1e-3, 1e-6);
+  }
+}
+
+TEST(ContactSystem, ANodeOnARidgeOfTheMasterPressesOnBothFacesAlike) {
+  // Two blocks meshed alike on a roof (ridge x = 0, slope 0.2 either side), node to surface;
+  // the upper one pushed down by d. The ridge's slave nodes lie on the bisector of the two
+  // master faces: they press on each with half their area (gap d cos a, force along the
+  // faces' normals), so their force is vertical, A K d cos^2 a. Either face alone would tilt
+  // it by a. Each slave node is one output record and one active contact.
+  const Real slope = 0.2, d = 1e-3, stiffness = 1e5;
+  std::ostringstream deck;
+  deck << "*NODE\n";
+  const Real xs[3] = {-1, 0, 1};
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const int n = 1 + i + 3 * j;
+      const Real z = -slope * std::abs(xs[i]);
+      deck << n << ", " << xs[i] << ", " << j << ", " << z << "\n"            // roof, lower
+           << 10 + n << ", " << xs[i] << ", " << j << ", -1.5\n"             // lower bottom
+           << 20 + n << ", " << xs[i] << ", " << j << ", " << z << "\n"      // roof, upper
+           << 30 + n << ", " << xs[i] << ", " << j << ", 1.0\n";             // upper top
+    }
+  deck << "*ELEMENT, TYPE=C3D8, ELSET=LOWER\n1, 11, 12, 15, 14, 1, 2, 5, 4\n"
+          "2, 12, 13, 16, 15, 2, 3, 6, 5\n"
+          "*ELEMENT, TYPE=C3D8, ELSET=UPPER\n3, 21, 22, 25, 24, 31, 32, 35, 34\n"
+          "4, 22, 23, 26, 25, 32, 33, 36, 35\n"
+          "*SURFACE, NAME=SLAVE\nUPPER, S1\n*SURFACE, NAME=MASTER\nLOWER, S2\n"
+          "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n"
+          "*SOLID SECTION, ELSET=LOWER, MATERIAL=M\n*SOLID SECTION, ELSET=UPPER, MATERIAL=M\n"
+          "*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
+       << stiffness << "\n*CONTACT PAIR, INTERACTION=SI, TYPE=NODE TO SURFACE\nSLAVE, MASTER\n"
+          "*STEP\n*STATIC\n*END STEP\n";
+  const model::Model m = inp::read_deck_text(deck.str(), "roof.inp");
+  ContactSystem sys(m);
+  sys.begin_step(m.steps[0]);
+  VecX u = VecX::Zero(3 * m.n_nodes());
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] > 20) u(3 * n + 2) = -d;
+  sys.begin_increment(u, {.step = 2}, 1);
+  VecX f;
+  assembled(sys, u, f, nullptr);
+  const Real cos_a = 1 / std::hypot(1.0, slope);
+  const Real pressure = pressure_overclosure(
+      make_pressure_law(m.interactions[0].behavior, false), d * cos_a).pressure;
+  const Real ridge_area = 0.5 / cos_a;  // a quarter of each of the two slave faces at the node
+  for (int n = 0; n < m.n_nodes(); ++n) {
+    if (m.mesh.node_ids[n] != 22 && m.mesh.node_ids[n] != 25) continue;
+    EXPECT_NEAR(std::abs(f(3 * n + 2)), ridge_area * pressure * cos_a, 1e-9);
+    EXPECT_LT(std::abs(f(3 * n)), 1e-12 * std::abs(f(3 * n + 2))) << m.mesh.node_ids[n];
+    EXPECT_LT(std::abs(f(3 * n + 1)), 1e-12 * std::abs(f(3 * n + 2)));
+  }
+  Vec3 resultant = Vec3::Zero();
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] > 20) resultant += f.segment<3>(3 * n);
+  EXPECT_LT(std::abs(resultant.x()), 1e-12 * std::abs(resultant.z()));
+  sys.commit();
+  const auto records = committed_points(sys, u);
+  EXPECT_EQ(records.size(), 6u);
+  EXPECT_EQ(sys.n_active(), 6);
+  for (const auto& r : records) {
+    EXPECT_TRUE(r.active);
+    EXPECT_NEAR(r.clearance, -d * cos_a, 1e-12);
+    EXPECT_NEAR(r.pressure, pressure, 1e-9);
   }
 }
 
