@@ -35,7 +35,7 @@ TEST_P(TotalLagrangian, TangentAtRestIsTheLinearStiffness) {
 
 /// Central-difference tangent and a Taylor test of the forces around u for temperatures dT.
 void check_tangent(ElementType type, const MatX3& x, const ThermoElastic& mat, const MatX3& u,
-                   const VecX& dT) {
+                   const VecX& dT, Real taylor_size = 0.05) {
   auto forces = [&](const MatX3& v) {
     NlgeomResult r;
     nlgeom_element(type, x, mat, v, dT, false, r);
@@ -44,7 +44,7 @@ void check_tangent(ElementType type, const MatX3& x, const ThermoElastic& mat, c
   NlgeomResult r;
   nlgeom_element(type, x, mat, u, dT, true, r);
   EXPECT_LT((test::fd_jacobian(forces, u) - r.tangent).norm(), 1e-6 * r.tangent.norm());
-  for (Real order : test::taylor_orders(forces, u, r.tangent, 0.05)) EXPECT_GT(order, 1.9);
+  for (Real order : test::taylor_orders(forces, u, r.tangent, taylor_size)) EXPECT_GT(order, 1.9);
 }
 
 TEST_P(TotalLagrangian, TangentMatchesCentralDifferencesAndConvergesQuadratically) {
@@ -102,10 +102,12 @@ TEST_P(TotalLagrangian, TangentOfOgdenAndHyperfoamMaterials) {
   material::Hyperfoam foam;
   foam.n_terms = 2;
   foam.mu = {300, 80, 0};
-  foam.alpha = {3, -2, 0};
+  foam.alpha = {8.88, -4.82, 0};  // beamhf's
   foam.beta = {0.2, 0, 0};
   mat.hyperelastic = foam;
-  check_tangent(type(), X(), mat, displacement(), VecX());
+  // At these powers of the stretches the third-order terms of 5 % steps still show (observed
+  // orders 1.82-1.84 at 0.05, 1.84 on C3D15 at 0.02): the asymptotic order needs smaller ones.
+  check_tangent(type(), X(), mat, displacement(), VecX(), 0.01);
 }
 
 TEST_P(TotalLagrangian, FreeThermalExpansionByOnePlusAlphaDTIsStressFree) {
