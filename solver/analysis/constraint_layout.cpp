@@ -5,8 +5,10 @@
 namespace kontakt::analysis {
 
 bool ConstraintLayout::update(const model::Model& model, const model::Step& step,
-                              linsolve::LinearSolver& solver, int threads) {
-  auto step_dofs = std::make_unique<assembly::DofMap>(model, step.boundaries, step.element_active);
+                              linsolve::LinearSolver& solver, int threads,
+                              const std::vector<char>& in_force) {
+  auto step_dofs =
+      std::make_unique<assembly::DofMap>(model, step.boundaries, step.element_active, in_force);
   if (dofs_ && dofs_->same_structure(*step_dofs)) return false;
   dofs_ = std::move(step_dofs);
   check_bodies_supported(model, *dofs_);

@@ -12,11 +12,12 @@ namespace kontakt::analysis {
 
 class ConstraintLayout {
  public:
-  /// Takes `step`'s constraints. When their layout differs from the current one, checks that
-  /// every body is supported, builds the assembly plan and reruns the solver's symbolic
-  /// analysis, and returns true (numeric factorisations must then be redone).
+  /// Takes `step`'s constraints (the nonlinear ones `in_force`, DofMap's). When their layout
+  /// differs from the current one, checks that every body is supported, builds the assembly
+  /// plan and reruns the solver's symbolic analysis, and returns true (numeric factorisations
+  /// must then be redone).
   bool update(const model::Model& model, const model::Step& step, linsolve::LinearSolver& solver,
-              int threads);
+              int threads, const std::vector<char>& in_force = {});
   /// Takes this increment's contact groups into the pattern. When they differ from the current
   /// ones, rebuilds the pattern and reruns the symbolic analysis, and returns true.
   bool set_contact_groups(const std::vector<std::vector<int>>& groups,

@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "analysis/constraint_layout.hpp"
+#include "analysis/distance_links.hpp"
 #include "analysis/element_access.hpp"
 #include "analysis/nonlinear_system.hpp"
 #include "analysis/singular_system.hpp"
@@ -71,7 +72,7 @@ class NonlinearStatic {
       : model_(model), options_(options), frames_(frames), events_(events),
         threads_(resolve_threads(options.threads)), t0_(Clock::now()),
         u_(VecX::Zero(3 * model.n_nodes())), cloads_prev_(VecX::Zero(3 * model.n_nodes())),
-        dT_prev_(VecX::Zero(model.n_nodes())), elements_(model), contact_(model),
+        dT_prev_(VecX::Zero(model.n_nodes())), elements_(model), contact_(model), links_(model),
         solver_(linsolve::make_cholmod_solver()),
         spd_(*solver_, /*allow_indefinite=*/true) {  // tangents past limit points
     for (const auto& m : model.materials) any_plastic_ |= !m.plastic.empty();
@@ -130,7 +131,7 @@ class NonlinearStatic {
     if (!step.procedure.data_line_given)
       warn(sc.number, step.where.file + ":" + std::to_string(step.where.line) +
                           ": *STATIC has no data line: one increment of 1 over a step time of 1");
-    layout_.update(model_, step, *solver_, threads_);
+    layout_.update(model_, step, *solver_, threads_, links_.in_force());
     change_elements(step);
     contact_.begin_step(step);
     require_loads_reach_elements(
@@ -223,6 +224,10 @@ class NonlinearStatic {
   /// from the static predictor's extrapolation of the converged state and moves the prescribed
   /// dofs to their new values through the linearised system.
   Attempt begin_attempt(const StepContext& sc) {
+    if (links_.begin_increment()) {  // a DIST linked or let go: other constraints from here
+      layout_.update(model_, *sc.step, *solver_, threads_, links_.in_force());
+      predictor_ = {};  // nor is the path before it extrapolated across the change (ccx)
+    }
     const assembly::DofMap& dofs = layout_.dofs();
     Attempt a;
     a.t_old = increments_->step_time();
@@ -489,6 +494,7 @@ class NonlinearStatic {
     u_ = a.u;
     elements_.commit();
     contact_.commit();
+    if (!links_.empty()) links_.commit(u_, a.ev.internal_force - loads_at(sc, a.t, a.u));
     const int increment_no = increments_->increment_number(), attempt = increments_->attempt();
     const Real dt = increments_->increment();
     const bool at_time_point = increments_->ends_at_time_point();
@@ -601,6 +607,7 @@ class NonlinearStatic {
 
   // Solution machinery
   ConstraintLayout layout_;
+  DistanceLinks links_;
   std::unique_ptr<linsolve::LinearSolver> solver_;
   linsolve::SpdSolve spd_;
   LinearElementCache element_cache_;

@@ -47,7 +47,7 @@ std::vector<DofTerm> merged(std::vector<DofTerm> terms) {
 }  // namespace
 
 DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries,
-               const std::vector<char>& active_elements)
+               const std::vector<char>& active_elements, const std::vector<char>& in_force)
     : model_(&model) {
   const int n = 3 * model.n_nodes();
   frames_ = model.local_frames;
@@ -88,7 +88,9 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
   // Nonlinear constraints: dependent dofs as an equation's; their other dofs are unknowns.
   std::map<int, int> nonlinear_of;  // dependent dof -> constraint
   const auto& constraints = model.nonlinear_constraints;
+  const auto enforced = [&](std::size_t i) { return in_force.empty() || in_force[i]; };
   for (int i = 0; i < static_cast<int>(constraints.size()); ++i) {
+    if (!enforced(static_cast<std::size_t>(i))) continue;
     const model::NonlinearConstraint& c = constraints[static_cast<std::size_t>(i)];
     const std::vector<ConstraintDof> cdofs = constraint_dofs(c);
     for (const ConstraintDof& cd : cdofs)
@@ -110,8 +112,8 @@ DofMap::DofMap(const model::Model& model, const std::vector<model::Boundary>& bo
     kind[d] = Kind::Dependent;
     nonlinear_of[d] = i;
   }
-  for (const auto& c : constraints)
-    for (const ConstraintDof& cd : constraint_dofs(c))
+  for (std::size_t i = 0; i < constraints.size(); ++i)
+    for (const ConstraintDof& cd : enforced(i) ? constraint_dofs(constraints[i]) : std::vector<ConstraintDof>{})
       if (kind[3 * cd.node + cd.component] == Kind::Inactive)
         kind[3 * cd.node + cd.component] = Kind::Free;  // a reference or rotation node
 
@@ -252,7 +254,7 @@ void DofMap::relinearise(VecX& u) {
     const model::NonlinearConstraint& c =
         model_->nonlinear_constraints[static_cast<std::size_t>(row.constraint)];
     const int d = row.dof;
-    // Newton on the dependent dof (g is linear in it for the kinds there are: one step).
+    // Newton on the dependent dof (one step where g is linear in it; DIST is quadratic).
     for (int it = 0;; ++it) {
       const Real g = constraint_value(c, coords, u, &gradient);
       const Real step = g / gradient[0];

@@ -40,9 +40,10 @@ class DofMap {
   /// constraints (a dof prescribed twice with different values is not an error: the last
   /// wins, as in ccx; a dependent dof that is also prescribed, or a cyclic equation chain, is).
   /// `active_elements` (Step::element_active; empty: all) leaves the dofs that only removed
-  /// elements hold inactive.
+  /// elements hold inactive. `in_force` (per Model::nonlinear_constraints; empty: all) leaves
+  /// out the constraints not in force (a DIST whose nodes are not linked).
   DofMap(const model::Model& model, const std::vector<model::Boundary>& boundaries,
-         const std::vector<char>& active_elements = {});
+         const std::vector<char>& active_elements = {}, const std::vector<char>& in_force = {});
 
   int n_dofs() const { return static_cast<int>(start_.size()) - 1; }
   int n_equations() const { return n_equations_; }

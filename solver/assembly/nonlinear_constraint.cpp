@@ -75,6 +75,8 @@ S residual(const NonlinearConstraint& c, const std::vector<Vec3>& X, const std::
       }
       return sum - static_cast<Real>(n) * u[n][0];
     }
+    case NonlinearConstraint::Kind::Distance:  // nodes a, b
+      return (x(0) - x(1)).squaredNorm() - c.distance * c.distance;
   }
   return S(0);
 }
@@ -98,6 +100,11 @@ std::vector<ConstraintDof> constraint_dofs(const NonlinearConstraint& c) {
       for (int k = 0; k < 3; ++k)
         if (k != c.component) out.push_back({n[0], k});
       for (int i = 1; i < 4; ++i) all_of(n[i]);
+      break;
+    case NonlinearConstraint::Kind::Distance:
+      for (int k = 0; k < 3; ++k)
+        if (k != c.component) out.push_back({n[0], k});
+      all_of(n[1]);
       break;
     case NonlinearConstraint::Kind::MeanRotation:
       for (int k = 0; k < 3; ++k)

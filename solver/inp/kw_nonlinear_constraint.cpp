@@ -1,4 +1,4 @@
-// *RIGID BODY and *MPC (PLANE, STRAIGHT, MEANROT): nonlinear constraints
+// *RIGID BODY and *MPC (PLANE, STRAIGHT, MEANROT, DIST): nonlinear constraints
 // (model::NonlinearConstraint).
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -131,6 +131,34 @@ void add_mean_rotation(const Record& record, DeckState& state, const std::vector
   state.model.nonlinear_constraints.push_back(std::move(c));
 }
 
+/// DIST: a, a, a, b, b, b, c (each of a and b once per dof): the distance from a to b may not
+/// exceed c's first coordinate. Solved, when linked, for the component of a along which the
+/// two lie farthest apart at rest.
+void add_distance(const Record& record, DeckState& state, const std::vector<int>& listed) {
+  const DataLine& head = record.lines.front();
+  const auto label = [&](int node) { return std::to_string(state.model.mesh.node_ids[node]); };
+  if (listed.size() != 7 || listed[1] != listed[0] || listed[2] != listed[0] ||
+      listed[4] != listed[3] || listed[5] != listed[3])
+    fail(record, head,
+         "DIST lists node a three times, node b three times (once per dof), then the node whose "
+         "first coordinate is the largest distance");
+  const int a = listed[0], b = listed[3], c = listed[6];
+  if (a == b) fail(record, head, "DIST: node " + label(a) + " is both ends");
+  const Real distance = state.coords[static_cast<std::size_t>(c)].x();
+  if (!(distance > 0))
+    fail(record, head,
+         "DIST: the first coordinate of node " + label(c) + " (the largest distance) must be positive");
+  const Vec3 rest = state.coords[static_cast<std::size_t>(a)] - state.coords[static_cast<std::size_t>(b)];
+  if (rest.norm() == 0) fail(record, head, "DIST: nodes " + label(a) + " and " + label(b) + " coincide");
+  state.model.nonlinear_constraints.push_back({.kind = NonlinearConstraint::Kind::Distance,
+                                               .nodes = {a, b},
+                                               .component = largest_component(rest),
+                                               .pivot = 0,
+                                               .distance = distance,
+                                               .where = record.where,
+                                               .keyword = "*MPC"});
+}
+
 }  // namespace
 
 void handle_rigid_body(const Record& record, DeckState& state) {
@@ -201,8 +229,14 @@ void handle_mpc(const Record& record, DeckState& state) {
   const std::string type = remove_blanks(to_upper(head.fields.empty() ? "" : head.fields[0]));
   const bool plane = type == "PLANE", straight = type == "STRAIGHT";
   if (type == "MEANROT") return add_mean_rotation(record, state, listed_nodes(record, state, 1));
+  if (type == "DIST") {
+    add_distance(record, state, listed_nodes(record, state, 1));
+    state.nonlinear_mpc = true;
+    return;
+  }
   if (!plane && !straight)
-    fail(record, head, "MPC type " + type + " is not supported (PLANE, STRAIGHT and MEANROT are)");
+    fail(record, head,
+         "MPC type " + type + " is not supported (PLANE, STRAIGHT, MEANROT and DIST are)");
   const std::vector<int> nodes = listed_nodes(record, state, 1);
   const std::size_t n_defining = plane ? 3 : 2;
   std::vector<int> seen = nodes;

@@ -193,7 +193,7 @@ struct Connector {
 std::string_view connector_type_name(Connector::Kind kind);
 
 /// A nonlinear multiple point constraint g(u) = 0 over the dofs of a few nodes, solved for
-/// one dependent dof (*RIGID BODY, *MPC PLANE / STRAIGHT / MEANROT;
+/// one dependent dof (*RIGID BODY, *MPC PLANE / STRAIGHT / MEANROT / DIST;
 /// assembly/nonlinear_constraint).
 struct NonlinearConstraint {
   enum class Kind {
@@ -203,11 +203,15 @@ struct NonlinearConstraint {
     /// nodes {n_1 .. n_N, e}: the mean rotation of n_1 .. n_N about the axis through their
     /// centre along e's coordinates is e's first dof (ccx's MEANROT, manual section 8.7.1)
     MeanRotation,
+    /// nodes {a, b}: |x_a - x_b| = `distance`, in force only while the two are linked: the
+    /// distance may not exceed it (ccx's DIST; analysis/distance_links decides when)
+    Distance,
   };
   Kind kind = Kind::Rigid;
   std::vector<int> nodes;  ///< internal indices, in the roles of `kind`
   int component = 0;       ///< the dependent dof: this component of nodes[0]
   int pivot = 0;           ///< Straight: the component of the line's direction g is scaled by
+  Real distance = 0;       ///< Distance: the largest distance
   SourceLoc where;
   std::string keyword;     ///< *RIGID BODY or *MPC, for messages
 };

@@ -36,11 +36,18 @@ model::NonlinearConstraint constraint(Kind kind, std::vector<int> nodes, int com
           .keyword = "*MPC"};
 }
 
+/// A DIST from node 5 (1, 1, 0) to node 0 (0, 0, 0) of at most 1.5, solved for 5's x.
+model::NonlinearConstraint distance_5_0() {
+  model::NonlinearConstraint c = constraint(Kind::Distance, {5, 0}, 0);
+  c.distance = 1.5;
+  return c;
+}
+
 /// One of every kind, on the nodes of bricks_with_extra_nodes().
 std::vector<model::NonlinearConstraint> every_kind() {
   return {constraint(Kind::Rigid, {8, 12, 13}, 1), constraint(Kind::Plane, {9, 0, 1, 2}, 0),
           constraint(Kind::Straight, {10, 0, 4}, 1, 0),
-          constraint(Kind::MeanRotation, {8, 9, 10, 11, 13}, 2)};
+          constraint(Kind::MeanRotation, {8, 9, 10, 11, 13}, 2), distance_5_0()};
 }
 
 VecX random_displacements(int n_nodes, Real size, unsigned seed) {
@@ -150,6 +157,7 @@ TEST(DofMap, RelinearisedConstraintsHoldExactlyAndTheirRowsAreTheDerivatives) {
       m.nonlinear_constraints.push_back(constraint(Kind::Rigid, {node, 12, 13}, c));
   m.nonlinear_constraints.push_back(constraint(Kind::Straight, {6, 1, 2}, 0, 2));
   m.nonlinear_constraints.push_back(constraint(Kind::Plane, {7, 0, 1, 2}, 0));
+  m.nonlinear_constraints.push_back(distance_5_0());  // quadratic in its dependent dof
   // Equations that follow the constraints (as the copies of a 2D node on a rigid body do),
   // one through the other: 3y = 0.5 8x + 0.25 2y, then 4z = 2 3y - 9z + 1.5 6x.
   m.equations.push_back({{{3, 1, 1.0}, {8, 0, -0.5}, {2, 1, -0.25}}, {"deck.inp", 9}});
@@ -221,4 +229,22 @@ TEST(DofMap, RefusesChainedAndPrescribedNonlinearConstraints) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot be chained"), std::string::npos) << e.what();
   }
+}
+
+TEST(DofMap, ANonlinearConstraintNotInForceLeavesItsDofsAlone) {
+  // A DIST whose nodes are not linked: node 5 moves freely, nothing is solved for it.
+  model::Model m = bricks_with_extra_nodes();
+  m.nonlinear_constraints.push_back(distance_5_0());
+  const assembly::DofMap linked(m, {{0, 0, 0}}), free(m, {{0, 0, 0}}, {}, {0});
+  EXPECT_TRUE(linked.has_nonlinear_constraints());
+  EXPECT_FALSE(linked.is_free(3 * 5));
+  EXPECT_FALSE(free.has_nonlinear_constraints());
+  EXPECT_TRUE(free.is_free(3 * 5));
+  VecX u = VecX::Zero(3 * 14);
+  u[3 * 5] = 0.7;  // 1.97 apart: beyond the distance, which only a linked DIST pulls back
+  VecX v = u;
+  assembly::DofMap(free).relinearise(v);
+  EXPECT_EQ(v[3 * 5], 0.7);
+  assembly::DofMap(linked).relinearise(u);
+  EXPECT_NEAR((m.mesh.coords.row(5).transpose() + u.segment<3>(15)).norm(), 1.5, 1e-14);
 }

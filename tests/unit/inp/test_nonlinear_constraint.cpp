@@ -1,4 +1,4 @@
-// *RIGID BODY and *MPC (PLANE, STRAIGHT, MEANROT): the constraints the reader builds (roles of
+// *RIGID BODY and *MPC (PLANE, STRAIGHT, MEANROT, DIST): the constraints the reader builds (roles of
 // the nodes, dependent dofs, NLGEOM switched on by *MPC as in ccx) and every malformed form
 // (run by test_errors.cpp through nonlinear_constraint_bad_decks()). Against ccx 2.20: the
 // suite's beamprb, beamrb, beamrb2, beamplane, beamstraight, beammr and beammrlin in
@@ -66,6 +66,14 @@ std::vector<BadDeck> nonlinear_constraint_bad_decks() {
       {"meanrot node on the axis",
        plus("*NODE\n102, 0, 1, 0\n*MPC\nMEANROT, 9, 9, 9, 10, 10, 10, 102\n"), 33, "*MPC",
        "node 9 lies on the rotation axis through the nodes' centre"},
+      {"dist not three times", plus("*MPC\nDIST, 12, 12, 1, 1, 1, 100\n"), 31, "*MPC",
+       "DIST lists node a three times, node b three times"},
+      {"dist one node both ends", plus("*MPC\nDIST, 12, 12, 12, 12, 12, 12, 100\n"), 31, "*MPC",
+       "DIST: node 12 is both ends"},
+      {"dist no distance", plus("*MPC\nDIST, 12, 12, 12, 1, 1, 1, 101\n"), 31, "*MPC",
+       "the first coordinate of node 101 (the largest distance) must be positive"},
+      {"dist coincident ends", plus("*NODE\n102, 0, 0, 0\n*MPC\nDIST, 1, 1, 1, 102, 102, 102, 100\n"),
+       33, "*MPC", "DIST: nodes 1 and 102 coincide"},
   };
 }
 
@@ -110,6 +118,19 @@ TEST(inpNonlinearConstraint, MpcSolvesAcrossThePlaneAndTheLineAndSwitchesNlgeomO
     EXPECT_EQ(line.component, k % 2 ? 1 : 2);
   }
   ASSERT_EQ(m.steps.size(), 1u);
+  EXPECT_TRUE(m.steps.front().nlgeom);
+}
+
+TEST(inpNonlinearConstraint, DistTakesItsLimitFromTheThirdNodeAndSwitchesNlgeomOn) {
+  const model::Model m = read_deck_text(test::constraint_model() +
+                                        "*MPC\nDIST, 12, 12, 12, 1, 1, 1, 100\n"
+                                        "*STEP\n*STATIC\n*END STEP\n");
+  ASSERT_EQ(m.nonlinear_constraints.size(), 1u);
+  const auto& c = m.nonlinear_constraints.front();
+  EXPECT_EQ(c.kind, Kind::Distance);
+  EXPECT_EQ(c.nodes, (std::vector<int>{m.mesh.node_index.at(12), m.mesh.node_index.at(1)}));
+  EXPECT_EQ(c.distance, 2);   // node 100's x
+  EXPECT_EQ(c.component, 0);  // node 12 lies farthest from node 1 in x
   EXPECT_TRUE(m.steps.front().nlgeom);
 }
 
