@@ -1,5 +1,7 @@
 #include "analysis/distance_links.hpp"
 
+#include <sstream>
+
 namespace kontakt::analysis {
 
 namespace {
@@ -37,14 +39,23 @@ bool DistanceLinks::calls_for_switch(const Link& link, const VecX& u, const VecX
   return mu > 0;
 }
 
-bool DistanceLinks::begin_increment() {
-  bool changed = false;
+std::vector<std::string> DistanceLinks::begin_increment() {
+  std::vector<std::string> changes;
   for (const Link& link : links_) {
     const char in_force = link.linked != link.switch_next;
-    changed |= in_force_[link.constraint] != in_force;
+    if (in_force_[link.constraint] == in_force) continue;
     in_force_[link.constraint] = in_force;
+    const NonlinearConstraint& c = model_.nonlinear_constraints[link.constraint];
+    std::ostringstream line;
+    line << c.where.file << ":" << c.where.line << ": *MPC DIST between nodes "
+         << model_.mesh.node_ids[c.nodes[0]] << " and " << model_.mesh.node_ids[c.nodes[1]]
+         << (in_force ? " linked from this increment on: their distance had reached "
+                      : " let go from this increment on: at its distance of ")
+         << c.distance << (in_force ? "" : " it had pushed them apart")
+         << " (at the end of the increment before; the change is one increment late, as in ccx)";
+    changes.push_back(line.str());
   }
-  return changed;
+  return changes;
 }
 
 void DistanceLinks::commit(const VecX& u, const VecX& residual) {

@@ -6,6 +6,7 @@
 // at t = 0.6, linked from 0.7; pushing at 1.5, free from 1.6; measured).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -23,9 +24,10 @@ class DistanceLinks {
   /// Per Model::nonlinear_constraints: in force in the current increment (DofMap's `in_force`).
   const std::vector<char>& in_force() const { return in_force_; }
 
-  /// The increment's links from the committed state; true when one differs from the previous
-  /// attempt's (the constraint layout must then be rebuilt). A redone increment decides alike.
-  bool begin_increment();
+  /// The increment's links from the committed state: what changed against the previous
+  /// attempt's, a line per DIST (the constraint layout must then be rebuilt; ccx prints "switch
+  /// to linked" / "switch to free"). A redone increment decides alike and reports nothing.
+  std::vector<std::string> begin_increment();
   /// The increment converged at `u` with `residual` (internal minus external nodal forces:
   /// at a linked DIST's dependent dof, the force it exerts there): its links are committed,
   /// and what the next increment will decide is judged there.

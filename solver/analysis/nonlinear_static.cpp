@@ -224,7 +224,8 @@ class NonlinearStatic {
   /// from the static predictor's extrapolation of the converged state and moves the prescribed
   /// dofs to their new values through the linearised system.
   Attempt begin_attempt(const StepContext& sc) {
-    if (links_.begin_increment()) {  // a DIST linked or let go: other constraints from here
+    if (const std::vector<std::string> changes = links_.begin_increment(); !changes.empty()) {
+      for (const std::string& change : changes) warn(sc.number, change);
       layout_.update(model_, *sc.step, *solver_, threads_, links_.in_force());
       predictor_ = {};  // nor is the path before it extrapolated across the change (ccx)
     }
