@@ -12,6 +12,7 @@
 #include "contact/master_search.hpp"
 #include "contact/slave_points.hpp"
 #include "contact/state_transfer.hpp"
+#include "output/contact_records.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 
@@ -688,34 +689,6 @@ Real drift_redo_factor(Real drift) {
   return std::clamp(std::sqrt(0.8 * kDriftTolerance / drift), 0.25, 0.75);
 }
 
-/// One slave node's record from the records of its shares (find_tied_masters): areas and
-/// energies add up, the rest is averaged by area; active or slipping when any share is.
-output::ContactPointRecord node_record(std::span<const output::ContactPointRecord> shares) {
-  output::ContactPointRecord r = shares.front();
-  r.area = r.energy = r.clearance = r.pressure = 0;
-  r.slip = r.shear = Vec2::Zero();
-  r.active = false;
-  bool slipping = false, sticking = false;
-  for (const auto& s : shares) {
-    r.area += s.area;
-    r.energy += s.energy;
-    r.clearance += s.area * s.clearance;
-    r.pressure += s.area * s.pressure;
-    r.slip += s.area * s.slip;
-    r.shear += s.area * s.shear;
-    r.active |= s.active;
-    slipping |= s.active && !s.sticking;
-    sticking |= s.sticking;
-  }
-  const Real w = r.area > 0 ? 1 / r.area : 0;
-  r.clearance *= w;
-  r.pressure *= w;
-  r.slip *= w;
-  r.shear *= w;
-  r.sticking = sticking && !slipping;
-  return r;
-}
-
 }  // namespace
 
 Acceptance ContactSystem::accept(const VecX& u, bool check_drift) const {
@@ -864,7 +837,7 @@ void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {
     }
     if (unit.node >= 0 && unit.points.size() > 1) {
       const auto shares = frame.contact_points.end() - static_cast<std::ptrdiff_t>(unit.points.size());
-      *shares = node_record(std::span(shares, frame.contact_points.end()));
+      *shares = output::merged_record(std::span(shares, frame.contact_points.end()));
       frame.contact_points.erase(shares + 1, frame.contact_points.end());
     }
     if (unit.node >= 0) frame.n_active_contact += frame.contact_points.back().active;

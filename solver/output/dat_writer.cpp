@@ -4,10 +4,13 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <tuple>
 
 #include "core/error.hpp"
 #include "material/anisotropic_elastic.hpp"
+#include "output/contact_records.hpp"
 #include "output/dat_headers.hpp"
 #include "output/fortran_format.hpp"
 
@@ -75,6 +78,10 @@ DatWriter::DatWriter(const model::Model& model, std::filesystem::path path)
     : model_(model), path_(std::move(path)), out_(path_, std::ios::out | std::ios::trunc) {
   if (!out_) throw SolverError("cannot create " + path_.string());
   for (int label : model.mesh.node_ids) largest_node_label_ = std::max(largest_node_label_, label);
+  printed_node_.resize(static_cast<std::size_t>(model.n_nodes()));
+  std::iota(printed_node_.begin(), printed_node_.end(), 0);
+  for (const model::PlanarFold& fold : model.planar_folds)
+    for (int copy : fold.expanded) printed_node_[static_cast<std::size_t>(copy)] = fold.node;
   for (const model::Element& el : model.mesh.elements)
     largest_element_label_ = std::max(largest_element_label_, el.id);
   for (std::size_t k = 0; k < model.connectors.size(); ++k) {
@@ -314,6 +321,20 @@ void DatWriter::contact_request(const model::ContactRequest& r, const Frame& f) 
   std::vector<const ContactPointRecord*> rows;
   for (const auto& p : f.contact_points)
     if (p.active) rows.push_back(&p);
+  // The copies of a 2D node print as the 2D node, merged (their values agree but for the
+  // expanded layer's shape).
+  std::vector<ContactPointRecord> folded;
+  if (by_node && !model_.planar_folds.empty()) {
+    std::map<std::pair<int, int>, std::vector<ContactPointRecord>> copies;  // (pair, 2D node)
+    for (const ContactPointRecord* p : rows) {
+      ContactPointRecord r = *p;
+      r.slave_node = printed_node_[static_cast<std::size_t>(p->slave_node)];
+      copies[{r.pair, r.slave_node}].push_back(r);
+    }
+    for (const auto& [key, records] : copies) folded.push_back(merged_record(records));
+    rows.clear();
+    for (const ContactPointRecord& r : folded) rows.push_back(&r);
+  }
   // ccx's order of contact elements: pair, then slave node or slave element and face.
   const auto key = [&](const ContactPointRecord* p) {
     if (by_node) {

@@ -53,6 +53,9 @@ class DatWriter {
   /// T3D2 truss label -> Model::connectors index: *EL PRINT lists a truss's rows (Frame::
   /// truss_S, ...) where its set has it, as ccx does its expanded element.
   std::unordered_map<int, int> truss_index_;
+  /// Internal node -> the 2D node it is an expanded copy of (model::PlanarFold), or itself:
+  /// contact prints name the 2D node, once, as ccx does.
+  std::vector<int> printed_node_;
 };
 
 }  // namespace kontakt::output

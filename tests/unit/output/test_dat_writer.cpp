@@ -395,6 +395,28 @@ TEST(DatWriter, ContactPrintNodeToSurfaceRowsPerSlaveNode) {
   EXPECT_EQ(slurp(path), kGoldenNodes);
 }
 
+TEST(DatWriter, ContactPrintNamesTheExpandedCopiesOfA2DNodeByTheNodeOnce) {
+  // Internal nodes 3 and 2 are the copies of the 2D node 1 (label 20): one row for 20, its
+  // pressure the copies' mean by area, (100 * 1 + 300 * 3) / 4, as ccx prints 2D models.
+  auto m = with_pair(model::ContactPair::Type::NodeToSurface);
+  m.planar_folds.push_back({.node = 1, .expanded = {3, 2}, .weights = {0.5, 0.5}});
+  auto f = two_tet_frame();
+  f.contact_points = {contact_point(-1, 0, 3, 100), contact_point(-1, 0, 2, 300)};
+  f.contact_points[0].area = 1;
+  f.contact_points[1].area = 3;
+  m.steps[0].contact_prints = {contact_print({"CSTR"})};
+  const auto path = tmp("contact_folded.dat");
+  {
+    DatWriter w(m, path);
+    w.write(m.steps[0], f);
+  }
+  EXPECT_EQ(slurp(path), R"(
+ contact stress (slave node,press,tang1,tang2) for all contact elements and time 0.1500000E+01
+
+        20  2.500000E+02  5.000000E-01 -2.500000E-01
+)");
+}
+
 TEST(DatWriter, ContactPrintTotalsOnlyAndPlaceAmongPrints) {
   auto m = with_pair(model::ContactPair::Type::NodeToSurface);
   auto f = two_tet_frame();
