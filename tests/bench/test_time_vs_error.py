@@ -116,7 +116,8 @@ class Checks(unittest.TestCase):
 class SphereCases(unittest.TestCase):
     def test_each_element_type_at_each_ratio(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[4, 6], sphere_elements=["C3D8", "C3D20"],
-                    line_elements=[], penalties=[], increments=[], slides=[], blocks=[])
+                    line_elements=[], penalties=[], increments=[], slides=[], blocks=[],
+                    hueeber_levels=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([c.setting for c in study],
                          ["C3D8 a/h 4", "C3D8 a/h 6", "C3D20 a/h 4", "C3D20 a/h 6"])
@@ -157,7 +158,8 @@ class BlockProblems(unittest.TestCase):
 
     def test_cases_per_level_and_a_failed_reference_is_no_error(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
-                    increments=[], slides=[], blocks=["punch", "cube"], block_levels=[4, 8])
+                    increments=[], slides=[], blocks=["punch", "cube"], block_levels=[4, 8],
+                    hueeber_levels=[])
 
         def failed(problem):
             raise ValueError(f"the reference run of the {problem} did not converge")
@@ -170,10 +172,113 @@ class BlockProblems(unittest.TestCase):
             study[0].measure(None)
 
 
+class HueeberBlocks(unittest.TestCase):
+    blocks = time_vs_error.hueeber_blocks
+    measure = time_vs_error.hueeber_measure
+
+    def setUp(self):
+        self.model = self.blocks.hueeber(2)
+
+    def test_side_loads_sum_to_the_traction_resultants(self):
+        # per side: 1e5 inwards and 1e6 downwards over 0.01 x 0.001: 1 N and 10 N
+        mesh, offset = self.model.lower.mesh, 0
+        by_side = {side: np.zeros(2) for side in ("XMIN", "XMAX")}
+        for body, node, dof, force in self.model.cloads:
+            self.assertEqual(body, "LOWER")
+            side = "XMIN" if node in mesh.nsets["XMIN"] else "XMAX"
+            self.assertIn(node - offset, mesh.nsets[side])
+            by_side[side][dof - 1] += force
+        np.testing.assert_allclose(by_side["XMIN"], [1.0, -10.0], rtol=1e-12)
+        np.testing.assert_allclose(by_side["XMAX"], [-1.0, -10.0], rtol=1e-12)
+
+    def test_bodies_touch_without_overlap_on_non_matching_meshes(self):
+        lower = np.array(list(self.model.lower.mesh.nodes.values()))
+        upper = np.array(list(self.model.upper.mesh.nodes.values()))
+        self.assertAlmostEqual(lower[:, 1].max(), self.blocks.SIDE)
+        self.assertAlmostEqual(upper[:, 1].min(), self.blocks.SIDE)
+        self.assertEqual(len(self.model.lower.mesh.elements), 12 * 12)
+        self.assertEqual(len(self.model.upper.mesh.elements), 14 * 14)
+        xs_lower = {round(x, 12) for x in lower[:, 0]}
+        xs_upper = {round(x, 12) for x in upper[:, 0]}
+        # 12 and 14 elements: only the ends and the middle meet
+        self.assertEqual(sorted(xs_lower & xs_upper), [0.0, 0.005, 0.01])
+
+    def test_sets_of_the_deck(self):
+        # the deck's slave (listed first) is the lower block's top; its upper top moves down
+        self.assertEqual(self.model.slave, ("LOWER", "YMAX"))
+        self.assertEqual(self.model.master, ("UPPER", "YMIN"))
+        self.assertEqual(len(self.model.faces("LOWER", "YMAX")), 12)
+        self.assertEqual(len(self.model.faces("UPPER", "YMIN")), 14)
+        self.assertIn(("LOWER", "YMIN", 1, 2, 0.0), self.model.fixed)
+        self.assertIn(("UPPER", "YMAX", 1, 1, 0.0), self.model.fixed)
+        self.assertIn(("UPPER", "YMAX", 2, 2, -5e-7), self.model.fixed)
+
+    def test_deck_scale_is_the_suite_mesh(self):
+        model = self.blocks.blocks(self.blocks.DECK_SCALE)
+        self.assertEqual(len(model.lower.mesh.elements), 60 * 60)
+        self.assertEqual(len(model.upper.mesh.elements), 70 * 70)
+
+    def test_settlement_is_the_area_weighted_mean(self):
+        # u_y = -1 - x / SIDE: the mean over the top is -1.5 (the end nodes count half)
+        u = {n: (0.0, -1.0 - x[0] / self.blocks.SIDE, 0.0)
+             for n, x in self.model.lower.mesh.nodes.items()}
+        self.assertAlmostEqual(self.measure.settlement(self.model, u), -1.5)
+
+    def nodal(self, model, pressure):
+        # the slave is the lower block's top: node ids without offset
+        return {n: (0.0, pressure(x[0])) for n, x in model.lower.mesh.nodes.items()
+                if n in model.lower.mesh.nsets["YMAX"]}
+
+    def test_pressure_difference_at_the_reference_nodes(self):
+        fine = self.blocks.hueeber(3)
+        linear = lambda x: 1e6 * x / self.blocks.SIDE  # noqa: E731
+        reference = {"settlement": -2.0,
+                     "profile": self.measure.pressure_profile(fine, self.nodal(fine, linear))}
+        exact = {"settlement": -2.0,
+                 "profile": self.measure.pressure_profile(self.model, self.nodal(self.model,
+                                                                                 linear))}
+        e = self.measure.errors(exact, reference)
+        self.assertEqual(e["error_u"], 0.0)
+        self.assertLess(e["error_cpress"], 1e-9)
+        shifted = {"settlement": -2.5, "profile": self.measure.pressure_profile(
+            self.model, self.nodal(self.model, lambda x: linear(x) + 2e5))}
+        e = self.measure.errors(shifted, reference)
+        self.assertAlmostEqual(e["error_u"], 0.25)
+        self.assertAlmostEqual(e["error_cpress"], 2e5 / 1e6)  # over the reference's peak
+
+    def test_a_reference_that_does_not_press_is_refused(self):
+        flat = {"settlement": -2.0, "profile": self.measure.pressure_profile(
+            self.model, self.nodal(self.model, lambda x: 0.0))}
+        with self.assertRaises(ValueError):
+            self.measure.errors(flat, flat)
+
+    def test_cases_per_level_and_a_failed_reference_is_no_error(self):
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
+                    increments=[], slides=[], blocks=[], hueeber_levels=[1, 2])
+
+        def failed():
+            raise ValueError("the reference run did not converge")
+        study = time_vs_error.cases(size, seed=1, hueeber_reference=failed)
+        self.assertEqual([(c.problem, c.setting) for c in study],
+                         [("hueeber", "level 1 (6/7)"), ("hueeber", "level 2 (12/14)")])
+        with self.assertRaises(ValueError):
+            study[0].measure(None)
+
+    def test_smoke_expects_the_hueeber_rows(self):
+        self.assertEqual(time_vs_error.SMOKE["hueeber_levels"], [1])
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
+                    increments=[], slides=[], blocks=[])
+        keys = time_vs_error.expected_keys(time_vs_error.cases(size, seed=1),
+                                           time_vs_error.SMOKE["schemes"], "kontakt", ccx=True)
+        self.assertEqual(len(keys), 5)
+        self.assertIn(("hueeber", "ccx", "surface-to-surface", "level 1 (6/7)"), keys)
+
+
 class PenaltyStudy(unittest.TestCase):
     def test_cases_carry_the_penalty_of_their_setting(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], blocks=[],
-                    penalties=[1, 1e4], penalty_ratio=4, increments=[], slides=[])
+                    penalties=[1, 1e4], penalty_ratio=4, increments=[], slides=[],
+                    hueeber_levels=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([c.setting for c in study], ["K a/E* 1", "K a/E* 10000"])
         e_star, a = time_vs_error.hertz_sphere.E_STAR, time_vs_error.hertz_sphere.TARGET_RADIUS
@@ -189,7 +294,7 @@ class PenaltyStudy(unittest.TestCase):
 class IncrementStudy(unittest.TestCase):
     def setUp(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[], blocks=[],
-                    increments=[1, 3], increment_ratio=4, slides=[])
+                    increments=[1, 3], increment_ratio=4, slides=[], hueeber_levels=[])
         self.study = time_vs_error.cases(size, seed=1)
 
     def test_each_increment_count_with_and_without_the_drift_check(self):
@@ -216,7 +321,7 @@ class IncrementStudy(unittest.TestCase):
 class DriftStudy(unittest.TestCase):
     def test_each_slide_count_with_and_without_the_drift_check(self):
         size = dict(time_vs_error.SMOKE, patch=0, ratios=[], line_elements=[], penalties=[],
-                    blocks=[], increments=[], slides=[1, 4])
+                    blocks=[], increments=[], slides=[1, 4], hueeber_levels=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([(c.problem, c.setting) for c in study],
                          [("sliding_increments", "1 increments"),

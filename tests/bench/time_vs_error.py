@@ -52,6 +52,16 @@ Problems (`setting` is what varies along a problem's axis):
   hertz_line    plane-strain Hertz line contact (tests/contact_models/hertz.py), setting =
                 element and mesh level; error_p0, error_p0_fit, error_radius (the half-width b)
                 as contact_hertz.py measures them; error = the largest magnitude.
+  hueeber       Hueeber's two blocks (tests/contact_models/hueeber_blocks.py: the ccx suite's
+                hueeber1 figures, plane strain, the upper block's top pressed down by 5e-7,
+                non-matching meshes 6 : 7 x 2^(level-1) elements per side), setting = the level
+                in --hueeber-levels (2 3 4 5). No closed form: errors against a kontakt lgc7
+                run at --hueeber-reference (level 6, 192/224, solved first, into
+                runs/hueeber/reference; hueeber_measure.py): error_u = the lower (loaded)
+                block's top mean settlement (area-weighted u_y), error_cpress = the largest
+                slave CPRESS difference along the interface (interpolated at the reference's
+                nodes) over the reference's peak (a reference without pressure is refused:
+                every row then is "not measured", and the smoke fails).
 A run that does not converge, or whose results cannot be measured, is a row with its status (and
 message) and no error; it never enters a front.
 
@@ -67,7 +77,8 @@ no less accurate (tests/bench/pareto.py).
 --smoke: patch 2 variants, sphere a/h 4, the penalty study at K a/E* 10 and the increment study
 at 1 increment (drift check on and off) on a/h 4, the cube at 4^3 against a 6^3 reference (the
 punch is not in it: nts does not converge on its 4^3 mesh at this placement, an open issue 9
-case the full study reports), line Hertz level 1 (C3D8), schemes nts gc7 lgc7 and
+case the full study reports), line Hertz level 1 (C3D8), Hueeber's blocks level 1 against a
+level 3 reference (about 2 s), schemes nts gc7 lgc7 and
 ccx's two types (no drift study: verification_contact_sliding runs its model in CI); exit code
 1 when the CSV lacks a column or a row per (problem, solver, scheme, setting), or a kontakt run
 did not converge with a measured error. Without --smoke only the CSV's completeness is
@@ -97,6 +108,8 @@ import contact_patch  # noqa: E402
 import frd_file  # noqa: E402
 import hertz  # noqa: E402
 import hertz_sphere  # noqa: E402
+import hueeber_blocks  # noqa: E402
+import hueeber_measure  # noqa: E402
 import pareto  # noqa: E402
 import patch  # noqa: E402
 import sliding_cylinder  # noqa: E402
@@ -115,15 +128,18 @@ HEADLINE = {"patch": ("error_szz", "error_cpress"),
             "sliding_increments": ("error_turned",),
             "punch": ("error_u", "error_vm", "error_p0"),
             "cube": ("error_u", "error_vm"),
-            "hertz_line": ("error_p0", "error_p0_fit", "error_radius")}
+            "hertz_line": ("error_p0", "error_p0_fit", "error_radius"),
+            "hueeber": ("error_u", "error_cpress")}
 CCX_SCHEME = {"NODE TO SURFACE": "node-to-surface", "SURFACE TO SURFACE": "surface-to-surface"}
 FULL = dict(patch=6, ratios=[4, 6, 8, 12], sphere_elements=["C3D8", "C3D20"], line_elements=["C3D8", "C3D20"], line_levels=[1, 2, 3],
             penalties=[1, 10, 100, 1000, 10000], penalty_ratio=6, increments=[1, 2, 3, 6, 12],
             increment_ratio=6, slides=[1, 2, 4, 8, 16], blocks=["punch", "cube"],
-            block_levels=[4, 8], block_reference=16, schemes=list(solvers.SCHEMES))
+            block_levels=[4, 8], block_reference=16, hueeber_levels=[2, 3, 4, 5],
+            hueeber_reference=6, schemes=list(solvers.SCHEMES))
 SMOKE = dict(patch=2, ratios=[4], sphere_elements=["C3D8"], line_elements=["C3D8"], line_levels=[1], penalties=[10],
              penalty_ratio=4, increments=[1], increment_ratio=4, slides=[], blocks=["cube"],
-             block_levels=[4], block_reference=6, schemes=["nts", "gc7", "lgc7"])
+             block_levels=[4], block_reference=6, hueeber_levels=[1], hueeber_reference=3,
+             schemes=["nts", "gc7", "lgc7"])
 DRIFT_OFF = ("--drift-check", "off")
 # off centre and turned: no mesh line of either body on a plane of symmetry
 BLOCK_PLACEMENT = dict(x=0.05, y=-0.03, rotation=15.0)
@@ -211,6 +227,38 @@ def block_errors(problem, model, run, reference):
     return out
 
 
+class HueeberReference:
+    """The fine-mesh reference figures of Hueeber's blocks: one kontakt run at the reference
+    level, solved when first asked for."""
+
+    def __init__(self, args, level):
+        self.args, self.level, self.found = args, level, None
+
+    def __call__(self):
+        if self.found is None:
+            model = hueeber_blocks.hueeber(self.level)
+            folder = os.path.join(self.args.out, "runs", "hueeber", "reference")
+            decks = {"SURFACE TO SURFACE": solvers.write_deck(model, folder, "SURFACE TO SURFACE",
+                                                              "hueeber")}
+            run = solvers.solve(decks, folder, BLOCK_REFERENCE_SCHEME, self.args.kontakt,
+                                self.args.timeout)
+            print(f"hueeber       reference level {self.level} kontakt {BLOCK_REFERENCE_SCHEME}: "
+                  f"{run.status}, {run.wall:.1f} s", flush=True)
+            self.found = (hueeber_measure.figures(model, run.result_dir, "hueeber")
+                          if run.converged else False)
+        if self.found is False:
+            raise ValueError(f"the level {self.level} reference run of the hueeber blocks did "
+                             "not converge")
+        return self.found
+
+
+def hueeber_errors(model, run, reference):
+    """error_u, error_cpress against the reference's figures (reference())."""
+    reference_figures = reference()
+    return hueeber_measure.errors(hueeber_measure.figures(model, run.result_dir, "hueeber"),
+                                  reference_figures)
+
+
 class BlockReference:
     """The fine-mesh reference figures of the punch and the cube: one kontakt run each, solved
     when first asked for."""
@@ -236,9 +284,10 @@ class BlockReference:
         return self.found[problem]
 
 
-def cases(size, seed, reference=None):
+def cases(size, seed, reference=None, hueeber_reference=None):
     """Every Case of a study size (FULL or SMOKE, possibly overridden); `reference(problem)`
-    gives the punch's and cube's reference figures (BlockReference)."""
+    gives the punch's and cube's reference figures (BlockReference), `hueeber_reference()`
+    those of Hueeber's blocks (HueeberReference)."""
     out = []
     for name, kwargs in contact_patch.random_variants(size["patch"], seed):
         out.append(Case("patch", name, patch.patch(**kwargs), "patch", patch_errors))
@@ -276,6 +325,11 @@ def cases(size, seed, reference=None):
             model = hertz.hertz(element, level)
             out.append(Case("hertz_line", f"{element} level {level}", model, "hertz",
                             lambda run, m=model, k=level: line_errors(m, k, run)))
+    for level in size["hueeber_levels"]:
+        model = hueeber_blocks.hueeber(level)
+        lower, upper = hueeber_blocks.elements_per_side(level)
+        out.append(Case("hueeber", f"level {level} ({lower}/{upper})", model, "hueeber",
+                        lambda run, m=model: hueeber_errors(m, run, hueeber_reference)))
     return out
 
 
@@ -523,6 +577,10 @@ def main():
                    help="line Hertz: element types (C3D8 C3D20)")
     p.add_argument("--line-levels", nargs="+", type=int, choices=(1, 2, 3),
                    help="line Hertz: mesh levels (1 2 3)")
+    p.add_argument("--hueeber-levels", nargs="+", type=int,
+                   help="Hueeber's blocks: mesh levels (2 3 4 5)")
+    p.add_argument("--hueeber-reference", type=int,
+                   help="Hueeber's blocks: mesh level of the reference run (6)")
     p.add_argument("--no-ccx", action="store_true", help="kontakt's schemes only")
     p.add_argument("--timeout", type=int, default=solvers.DEFAULT_TIMEOUT, help="per run, s")
     p.add_argument("--replot", action="store_true",
@@ -530,7 +588,8 @@ def main():
     args = p.parse_args()
     size = dict(SMOKE if args.smoke else FULL)
     for key in ("patch", "ratios", "sphere_elements", "line_elements", "line_levels", "penalties", "penalty_ratio",
-                "increments", "increment_ratio", "slides", "block_levels", "block_reference"):
+                "increments", "increment_ratio", "slides", "block_levels", "block_reference",
+                "hueeber_levels", "hueeber_reference"):
         if getattr(args, key) is not None:
             size[key] = getattr(args, key)
     if args.smoke and "--schemes" not in sys.argv:
@@ -538,7 +597,10 @@ def main():
     args.out = os.path.abspath(args.out)
     os.makedirs(args.out, exist_ok=True)
     size["blocks"] = [b for b in size["blocks"] if b in args.problems]
-    all_cases = [c for c in cases(size, args.seed, BlockReference(args, size["block_reference"]))
+    if "hueeber" not in args.problems:
+        size["hueeber_levels"] = []
+    all_cases = [c for c in cases(size, args.seed, BlockReference(args, size["block_reference"]),
+                                  HueeberReference(args, size["hueeber_reference"]))
                  if c.problem in args.problems]
     csv_path = os.path.join(args.out, "time_vs_error.csv")
     print(f"one run at a time, 1 thread each, nice {solvers.NICENESS}; patch seed {args.seed}")
