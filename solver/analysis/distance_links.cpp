@@ -52,7 +52,7 @@ std::vector<std::string> DistanceLinks::begin_increment() {
          << (in_force ? " linked from this increment on: their distance had reached "
                       : " let go from this increment on: at its distance of ")
          << c.distance << (in_force ? "" : " it had pushed them apart")
-         << " (at the end of the increment before; the change is one increment late, as in ccx)";
+         << " in the state this increment starts from (judged there, as ccx does)";
     changes.push_back(line.str());
   }
   return changes;
