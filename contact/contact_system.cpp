@@ -227,9 +227,7 @@ ContactSystem::FreshMasters ContactSystem::fresh_masters(const Unit& unit, const
 }
 
 MasterFoot ContactSystem::FreshMasters::find(const Vec3& x) const {
-  std::vector<const FaceGeometry*> c;
-  for (const auto& m : geometry) c.push_back(&m);
-  return find_master(x, c);
+  return find_master(x, as_candidates(geometry));
 }
 
 void ContactSystem::find_candidates(Unit& unit, const VecX& u,
@@ -258,9 +256,8 @@ void ContactSystem::build_points(Unit& unit, const VecX& u, const OldStates& old
   if (unit.node >= 0) {
     // A node over an edge or vertex of the master surface presses on each face there with its
     // share of the nodal area (find_tied_masters); pair_point keeps each share on its face.
-    std::vector<const FaceGeometry*> c;
-    for (const auto& m : g.masters) c.push_back(&m);
-    const std::vector<MasterFoot> feet = find_tied_masters(g.slave.x.row(0).transpose(), c);
+    const std::vector<MasterFoot> feet =
+        find_tied_masters(g.slave.x.row(0).transpose(), as_candidates(g.masters));
     const int shares = std::max(1, static_cast<int>(feet.size()));
     for (int k = 0; k < shares; ++k)
       unit.points.push_back({.ref_weight = Real(1) / shares,
@@ -372,11 +369,7 @@ ContactSystem::Pairing ContactSystem::pair_point(const Unit& unit, const UnitGeo
     const ClosestPoint f = project_onto_face(m, xs, face_centre(m.topo));
     if (f.converged && inside_reference_face(m.topo, f.xi, kEdgeTolerance)) best = {previous, f};
   }
-  if (best.candidate < 0) {
-    std::vector<const FaceGeometry*> c;
-    for (const auto& m : g.masters) c.push_back(&m);
-    best = find_master(xs, c);
-  }
+  if (best.candidate < 0) best = find_master(xs, as_candidates(g.masters));
   Pairing p;
   if (best.candidate < 0) return p;
   p.master = best.candidate;

@@ -88,6 +88,12 @@ class Search {
 
 }  // namespace
 
+std::vector<const FaceGeometry*> as_candidates(const std::vector<FaceGeometry>& faces) {
+  std::vector<const FaceGeometry*> c;
+  for (const FaceGeometry& f : faces) c.push_back(&f);
+  return c;
+}
+
 MasterFoot find_master(const Vec3& p, std::span<const FaceGeometry* const> candidates) {
   return Search(p, candidates).nearest().first;
 }

@@ -23,6 +23,9 @@ struct MasterFoot {
 inline constexpr Real kInsideTolerance = 1e-3;
 inline constexpr Real kEdgeTolerance = 0.05;
 
+/// Every face of `faces` as a candidate list.
+std::vector<const FaceGeometry*> as_candidates(const std::vector<FaceGeometry>& faces);
+
 /// The nearest candidate `p` projects into. Candidates are visited by the distance from `p`
 /// to their bounding boxes, and the search stops at the first box farther than the best foot
 /// found (a foot lies in its face's box): only the faces near the point are projected on.

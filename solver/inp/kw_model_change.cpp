@@ -32,11 +32,10 @@ void handle_model_change(const Record& record, DeckState& state) {
         }
         for (int label : labels) {
           const auto found = index.find(label);
-          if (const auto c = state.connector_index.find(label); c != state.connector_index.end())
+          if (const auto kind = connector_kind(state, label))
             fail(record, line,
                  "element " + std::to_string(label) + " is a " +
-                     std::string(model::connector_type_name(
-                         state.connectors[static_cast<std::size_t>(c->second)].kind)) +
+                     std::string(model::connector_type_name(*kind)) +
                      " element: TYPE=ELEMENT takes solid elements only");
           if (found == index.end())
             fail(record, line, "element " + std::to_string(label) + " is not defined");

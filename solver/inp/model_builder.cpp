@@ -87,6 +87,12 @@ std::vector<int> element_set_members(const DeckState& state, const RawSet& set,
   return set_members(solids, name, state, state.model.mesh.element_index, "element", "*ELSET");
 }
 
+std::optional<model::Connector::Kind> connector_kind(const DeckState& state, int label) {
+  const auto c = state.connector_index.find(label);
+  if (c == state.connector_index.end()) return std::nullopt;
+  return state.connectors[static_cast<std::size_t>(c->second)].kind;
+}
+
 std::vector<int> connector_labels(const DeckState& state, const RawSet& set) {
   std::vector<int> labels;
   for (const auto& [label, line_id] : set_labels(set, state.connector_index))
@@ -125,9 +131,7 @@ std::vector<int> resolve_element_field(const DeckState& state, const Record& rec
   // Distributed loads (their only users here) would silently pass a truss by.
   const auto refuse_trusses = [&](const std::vector<int>& labels) {
     for (int label : labels)
-      if (const auto c = state.connector_index.find(label);
-          c != state.connector_index.end() &&
-          state.connectors[static_cast<std::size_t>(c->second)].kind == model::Connector::Kind::Truss)
+      if (connector_kind(state, label) == model::Connector::Kind::Truss)
         fail(record, line, "element " + std::to_string(label) +
                                " is a truss (T3D2): distributed loads on trusses are not supported");
   };
@@ -231,12 +235,10 @@ model::Surface build_surface(const DeckState& state, const std::string& name,
   for (const RawFace& face : raw.faces) {
     const SourceLoc& where = state.line_locs[static_cast<std::size_t>(face.line_id)];
     const auto found = mesh.element_index.find(face.element_label);
-    if (const auto c = state.connector_index.find(face.element_label);
-        c != state.connector_index.end())
+    if (const auto kind = connector_kind(state, face.element_label))
       throw InputError(where, "*SURFACE",
                        "element " + std::to_string(face.element_label) + " is a " +
-                           std::string(model::connector_type_name(
-                               state.connectors[static_cast<std::size_t>(c->second)].kind)) +
+                           std::string(model::connector_type_name(*kind)) +
                            " element: it has no faces for a surface (contact on trusses, springs "
                            "and gaps is not supported)");
     if (found == mesh.element_index.end()) {
@@ -532,8 +534,7 @@ void resolve_section_changes(DeckState& state) {
       if (elset == model.element_sets.end())
         refuse(change, "element set " + change.elset + " is not defined");
       for (int label : connector_labels(state, state.element_sets.at(change.elset)))
-        if (model.connectors[static_cast<std::size_t>(state.connector_index.at(label))].kind ==
-            model::Connector::Kind::Truss)
+        if (connector_kind(state, label) == model::Connector::Kind::Truss)
           refuse(change, "element " + std::to_string(label) +
                              " is a truss (T3D2): its section cannot change (solids only)");
       for (int e : elset->second.elements) {

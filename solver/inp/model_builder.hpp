@@ -2,6 +2,7 @@
 // turns a DeckState into a Model.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -42,6 +43,9 @@ int amplitude_param(DeckState& state, const Record& record);
 
 /// The SPRINGA, GAPUNI and T3D2 labels of an element set (DeckState::connector_index).
 std::vector<int> connector_labels(const DeckState& state, const RawSet& set);
+
+/// The kind of element `label` when it is a SPRINGA, GAPUNI or T3D2 element.
+std::optional<model::Connector::Kind> connector_kind(const DeckState& state, int label);
 
 /// Builds Model::connectors from their *ELEMENT lines and their *SPRING / *GAP laws
 /// (kw_connector.cpp).
