@@ -694,12 +694,25 @@ Acceptance ContactSystem::accept(const VecX& u, bool check_drift) const {
     return {.accepted = false, .redo_factor = kMissedRedoFactor, .reason = reason.str(),
             .required = true};
   }
+  if (const MissedContact unheld = unheld_penetration(u); unheld.depth > 0) {
+    std::ostringstream reason;
+    reason << "a slave point without contact element penetrates its master by " << unheld.depth
+           << " at (" << unheld.where.x() << ", " << unheld.where.y() << ", "
+           << unheld.where.z() << ")";
+    return {.accepted = false, .redo_factor = kMissedRedoFactor, .reason = reason.str(),
+            .required = true, .pair_again = true};
+  }
   if (!check_drift || criteria() != nonlinear::ContactCriteria::SurfaceToSurface) return {};
   const Real drift = frozen_drift(u, trees);
   if (drift <= kRefreezeTolerance) return {};
   return {.accepted = false, .redo_factor = drift_redo_factor(drift),
           .reason = "frozen contact geometry drifted: gaps off by " + std::to_string(drift) +
                     " of the largest overclosure", .refreeze_only = drift <= kDriftTolerance};
+}
+
+void ContactSystem::pair_again() {
+  repair_once_ = true;
+  evaluations_ = 0;
 }
 
 void ContactSystem::commit() {
@@ -758,12 +771,17 @@ Real ContactSystem::frozen_drift(const VecX& u, const std::vector<AabbTree>& tre
   return overclosure > 0 ? drift / overclosure : 0;
 }
 
-MissedContact ContactSystem::missed_contact(const VecX& u,
-                                            const std::vector<AabbTree>& trees) const {
-  Real overclosure = 0, coordinates = 0;
+Real ContactSystem::penetration_tolerance(Real coordinates) const {
+  Real overclosure = 0;
   for (const Unit& unit : units_)
     for (const Point& pt : unit.points)
       if (pt.trial.active) overclosure = std::max(overclosure, -pt.trial.gap);
+  return std::max(kDriftTolerance * overclosure, kGapRoundOff * coordinates);
+}
+
+MissedContact ContactSystem::missed_contact(const VecX& u,
+                                            const std::vector<AabbTree>& trees) const {
+  Real coordinates = 0;
   MissedContact worst;
   for (const Unit& unit : units_) {
     if (!pairs_[unit.pair].active) continue;
@@ -787,8 +805,27 @@ MissedContact ContactSystem::missed_contact(const VecX& u,
     if (unit.node < 0)
       for (Index i = 0; i < slave.x.rows(); ++i) check(slave.x.row(i).transpose(), 0);
   }
-  const Real tolerance = std::max(kDriftTolerance * overclosure, kGapRoundOff * coordinates);
-  return worst.depth > tolerance ? worst : MissedContact{};
+  return worst.depth > penetration_tolerance(coordinates) ? worst : MissedContact{};
+}
+
+MissedContact ContactSystem::unheld_penetration(const VecX& u) const {
+  Real coordinates = 0;
+  MissedContact worst;
+  for (const Unit& unit : units_) {
+    const Pair& pair = pairs_[unit.pair];
+    if (!pair.active || pair.scheme.linear || unit.points.empty()) continue;
+    const UnitGeometry g = geometry(unit, u);
+    coordinates = std::max(coordinates, g.slave.x.cwiseAbs().maxCoeff());
+    for (const Point& pt : unit.points) {
+      if (pt.trial.active) continue;
+      const Vec3 xs = g.slave.x.transpose() * slave_weights(unit, pt);
+      const MasterFoot foot = find_master(xs, as_candidates(g.masters));
+      if (foot.candidate < 0) continue;
+      const Real depth = -(foot.foot.gap + gap_offset(pt));
+      if (depth > worst.depth) worst = {.depth = depth, .where = xs};
+    }
+  }
+  return worst.depth > penetration_tolerance(coordinates) ? worst : MissedContact{};
 }
 
 void ContactSystem::write_output(const VecX& u, output::Frame& frame) const {

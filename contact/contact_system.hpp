@@ -64,6 +64,9 @@ struct Acceptance {
   bool required = false;        ///< wrong as it stands: redone or failed, never kept
   /// Within the tolerance a redo aims at, but a refreeze would sharpen it: may stand as it is.
   bool refreeze_only = false;
+  /// A point penetrates a master face it was offered, with no contact element there (the
+  /// pairing that decides them was fixed before it got there): pair again and iterate on.
+  bool pair_again = false;
 };
 
 /// The deepest penetration of a slave point into a master face outside its increment's search
@@ -146,6 +149,9 @@ class ContactSystem {
   /// answer is wrong); with `check_drift`, so is a drifted frozen geometry (thesis section
   /// 7.1: frozen projections that no longer lie under their points give wrong gaps).
   Acceptance accept(const VecX& u, bool check_drift = true) const;
+  /// The next update pairs every point of the nonlinear variants and nts again (as at the
+  /// start of a stabilised solve), and keeps that pairing through the solve.
+  void pair_again();
   void commit();
   void roll_back();
 
@@ -190,6 +196,12 @@ class ContactSystem {
   /// into a face that was not among its candidates at begin_increment, beyond a tenth of the
   /// largest overclosure of the active points (the drift check's tolerance) and round-off.
   MissedContact missed_contact(const VecX& u) const { return missed_contact(u, master_trees(u)); }
+
+  /// The deepest penetration, beyond the drift check's tolerance, of a point of the nonlinear
+  /// variants or nts that carries no contact force into a master face its increment offered:
+  /// their contact elements are decided at pairing, which the Newton solve stops doing after
+  /// its first evaluations, so a point can pass through a face it was offered unseen.
+  MissedContact unheld_penetration(const VecX& u) const;
 
  private:
   /// Where a point is paired: fixed at begin_increment, except for the re-pairing of the
@@ -251,6 +263,9 @@ class ContactSystem {
   // accept() builds the trees once for both checks.
   Real frozen_drift(const VecX& u, const std::vector<AabbTree>& trees) const;
   MissedContact missed_contact(const VecX& u, const std::vector<AabbTree>& trees) const;
+  /// How deep a missed or unheld point may be: the drift check's share of the largest
+  /// overclosure of the active points, or round-off of slave coordinates up to `coordinates`.
+  Real penetration_tolerance(Real coordinates) const;
   /// Where a unit looks for master faces: its slave face's (node's) box, its size (the largest
   /// of the node's faces) and the slave face's normal (zero for a node).
   struct SearchRegion {

@@ -277,6 +277,7 @@ class NonlinearStatic {
     bool at_start = true;   // the iterate sits where the attempt started
     int level_it = 0;       // iterations of the current level (of the attempt, unstabilised)
     int refreezes = 0;      // of the attempt's drifted contact geometry
+    int level_pairings = 0; // of the current stabilised level
     for (int it = 1;; ++it) {
       if (options_.cancel && options_.cancel->load())
         throw Cancelled("cancelled in step " + std::to_string(sc.number) + ", increment " +
@@ -332,6 +333,14 @@ class NonlinearStatic {
               ": the loads move a body that only contact holds away from its contact (" +
               (engaged_because.empty() ? "no contact point touches" : engaged_because) +
               "): it has no equilibrium");
+        if (level_pairings < kMaxRefreezes && contact_.unheld_penetration(a.u).depth > 0) {
+          // Points passed through faces they were offered: this level goes on, paired again.
+          contact_.pair_again();
+          ++level_pairings;
+          level_it = 0;
+          continue;
+        }
+        level_pairings = 0;
         x_saved = a.x;
         u_saved = a.u;
         saved_share = contact_.stabilisation_share();
@@ -471,6 +480,11 @@ class NonlinearStatic {
     if (contact_.empty()) return converged;
     const contact::Acceptance acceptance = contact_.accept(a.u, options_.drift_check);
     if (acceptance.accepted) return converged;
+    if (acceptance.pair_again && refreezes < kMaxRefreezes) {
+      contact_.pair_again();
+      ++refreezes;
+      return {.kind = nonlinear::Verdict::Kind::Iterate, .reason = acceptance.reason};
+    }
     if (!acceptance.required && refreezes < kMaxRefreezes) {
       timed(times_.contact_search, [&] { contact_.refreeze(a.u, u_, threads_); });
       ++refreezes;

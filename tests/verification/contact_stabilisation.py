@@ -23,6 +23,11 @@ nts 2e-5 in U and 0.6 % in CPRESS).
 And where the springs cannot be released, the run says why: the 4^3 punch at x 0.05, y -0.03,
 15 degrees with nts rests on its apex node alone, free to rock (tests/bench/README.md); its
 run must fail naming that (not converge on springs, nor fail with only the last divergence).
+Nor may a punch that rocks converge through the master: the 4^3 punch at x 0.047, y -0.149, 50.2
+degrees with nts once ended with ring nodes 9.7e-3 inside the lower block, carrying nothing,
+where the apex pressed 3e-4 deep (their contact elements are decided at pairing, and the tilt
+came after it). Converged, no node of the punch that carries no pressure may lie deeper below
+the lower block's lowest top node than the deepest one that does; or the run fails and says so.
 
   contact_stabilisation.py --kontakt EXE [--work DIR] [--smoke] [--only NAME ...]
 """
@@ -75,7 +80,8 @@ GENERATED = {  # name -> (model, schemes)
     "punch_c3d8": (lambda: thesis_blocks.punch("C3D8", n=4, x=0.1, y=0.05, z=-0.0023,
                                                rotation=66), ("lgc7", "gc7")),
 }
-SMOKE = ("patch_thesis", "cube_c3d8", "punch_c3d8", "contact3", "hueeber1", "rocking_punch")
+SMOKE = ("patch_thesis", "cube_c3d8", "punch_c3d8", "contact3", "hueeber1", "rocking_punch",
+         "unheld_punch")
 
 
 def final_fields(result_dir, name):
@@ -183,6 +189,41 @@ def rocking_punch(exe, work, timeout):
     return not run.converged and said, run.status + ": " + run.message[-160:]
 
 
+def unheld_depths(result_dir, name):
+    """(deepest pressing, deepest non-pressing) slave node below the lowest node of the lower
+    block's top in the last frame (the upper block's nodes are the slave side)."""
+    import h5py
+    import numpy as np
+    with h5py.File(os.path.join(result_dir, name + ".hdf"), "r") as f:
+        last = f["frames"][sorted(f["frames"])[-1]]
+        x = f["VTKHDF/Points"][()] + last["U"][()]
+        upper_elements = set(f["mesh/sets/elsets/UPPER"][()].tolist())
+        upper = np.zeros(len(x), bool)
+        for element, nodes in zip(f["mesh/element_ids"][()], f["mesh/xdmf_topology"][()]):
+            if element in upper_elements:
+                upper[nodes] = True
+        lower_z = f["VTKHDF/Points"][()][~upper, 2]
+        lower_top = (~upper) & (f["VTKHDF/Points"][()][:, 2] > lower_z.max() - 1e-9)
+        depth = x[lower_top, 2].min() - x[:, 2]
+        pressing = last["CPRESS"][()] > 0
+        return (float(depth[upper & pressing].max(initial=0)),
+                float(depth[upper & ~pressing].max(initial=0)))
+
+
+def unheld_punch(exe, work, timeout):
+    """(ok, text): the nts punch that rocks converges without passing through the master, or
+    fails saying why."""
+    model = thesis_blocks.punch("C3D8", n=4, x=0.047, y=-0.149, rotation=50.2)
+    folder = os.path.join(work, "unheld_punch")
+    deck = solvers.write_deck(model, folder, "NODE TO SURFACE", "punch")
+    out = os.path.join(folder, "kontakt_nts")
+    run = solvers.run_kontakt(exe, deck, "nts", out, timeout)
+    if not run.converged:
+        return bool(run.message), run.status + ": " + run.message[-160:]
+    held, unheld = unheld_depths(out, "punch")
+    return unheld <= held, f"converged; deepest node without pressure {unheld:.3g}, with {held:.3g}"
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--kontakt", required=True, help="the kontakt executable")
@@ -207,6 +248,10 @@ def main():
         ok, text = rocking_punch(args.kontakt, args.work, args.timeout)
         failed += not ok
         print(f"{'rocking_punch nts':28s} {'ok' if ok else 'FAIL':6s} {text}")
+    if not args.only or "unheld_punch" in args.only:
+        ok, text = unheld_punch(args.kontakt, args.work, args.timeout)
+        failed += not ok
+        print(f"{'unheld_punch nts':28s} {'ok' if ok else 'FAIL':6s} {text}")
     return 1 if failed else 0
 
 

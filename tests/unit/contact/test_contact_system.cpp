@@ -205,6 +205,52 @@ TEST(ContactSystem, InitialOverlapIsRampedOutOverStepOne) {
   for (const auto& r : committed_points(sys, u)) EXPECT_NEAR(r.clearance, -1e-3, 1e-12);
 }
 
+TEST(ContactSystem, APointThatPassesThroughAnOfferedFaceAfterItsPairingIsPairedAgain) {
+  // Upper block 0.01 above the lower one: paired with the faces under it at the increment's
+  // start, but without contact elements (beyond the creation clearance c0 sqrt(A)). Moved
+  // 0.011 down once the solve no longer pairs, its points sit 1e-3 deep in faces they were
+  // offered and carry nothing: wrong as it stands. Paired again, they press, and keep pressing.
+  // The linear variant evaluates its frozen points in every update: nothing to pair again.
+  for (const char* name : {"nts", "gc7", "lgc7"}) {
+    SCOPED_TRACE(name);
+    const bool linear = std::string(name) == "lgc7";
+    fixtures::TwoBlocks t;
+    t.gap = 0.01;
+    model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
+    ContactSystem sys(m);
+    const VecX u0 = VecX::Zero(3 * m.n_nodes());
+    VecX u = u0;
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -0.011;
+    sys.begin_increment(u0, {.step = 2}, 1);
+    for (int evaluation = 0; evaluation < 12; ++evaluation) sys.update(u0, 1);
+    sys.update(u, 1);
+    EXPECT_EQ(sys.missed_contact(u).depth, 0);  // every face under the points was offered
+    if (linear) {
+      EXPECT_GT(sys.n_active(), 0);
+      EXPECT_EQ(sys.unheld_penetration(u).depth, 0);
+      EXPECT_TRUE(sys.accept(u, /*check_drift=*/false).accepted);
+      continue;
+    }
+    EXPECT_EQ(sys.n_active(), 0);
+    EXPECT_NEAR(sys.unheld_penetration(u).depth, 1e-3, 1e-9);
+    const Acceptance again = sys.accept(u, /*check_drift=*/false);
+    EXPECT_FALSE(again.accepted);
+    EXPECT_TRUE(again.required);
+    EXPECT_TRUE(again.pair_again);
+    EXPECT_NE(again.reason.find("without contact element penetrates its master by 0.001"),
+              std::string::npos);
+    sys.pair_again();
+    sys.update(u, 1);
+    const int pressing = sys.n_active();
+    EXPECT_GT(pressing, 0);
+    EXPECT_EQ(sys.unheld_penetration(u).depth, 0);
+    EXPECT_TRUE(sys.accept(u, /*check_drift=*/false).accepted);
+    for (int evaluation = 0; evaluation < 12; ++evaluation) sys.update(u, 1);
+    EXPECT_EQ(sys.n_active(), pressing);
+  }
+}
+
 TEST(ContactSystem, StabilisationSpringsActOnTheChangeOfTheGapSinceTheIncrementStarted) {
   // Upper block 0.01 above the lower one: no contact. Moved down by 0.004 within the
   // increment, every paired point's spring (factor * K per unit area) is stretched by 0.004:
