@@ -132,8 +132,8 @@ model::SolutionControls ContactSystem::solution_controls(
 }
 
 bool ContactSystem::wants_line_search(int iteration) const {
-  return criteria() == nonlinear::ContactCriteria::SurfaceToSurface && iteration > 1 &&
-         sums_.active > 0;
+  const bool searching = criteria() == nonlinear::ContactCriteria::SurfaceToSurface || repair_once_;
+  return searching && iteration > 1 && sums_.active > 0;
 }
 
 FaceGeometry ContactSystem::slave_geometry(const Unit& unit, const VecX& u) const {
@@ -471,7 +471,7 @@ void ContactSystem::Sums::add(const Sums& o) {
   min_open_gap = std::min(min_open_gap, o.min_open_gap);
 }
 
-ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool repair) {
+ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, Repairing repairing) {
   const Pair& pair = pairs_[unit.pair];
   for (int gi : unit.groups) {
     if (gi < 0) continue;
@@ -497,7 +497,9 @@ ContactSystem::Sums ContactSystem::evaluate_unit(Unit& unit, const VecX& u, bool
   // The contact response of one point into its trial state; true when it is active.
   auto contact_response = [&](Point& pt) {
     PointState& s = pt.trial;
-    if (repair) pt.pairing = pair_point(unit, g, pt, u);
+    if (repairing == Repairing::All ||
+        (repairing == Repairing::WithoutElement && !pt.pairing.exists))
+      pt.pairing = pair_point(unit, g, pt, u);
     Pairing& p = pt.pairing;
     if (p.master < 0) return false;
     if (pair.scheme.linear) {
@@ -595,10 +597,14 @@ void ContactSystem::update(const VecX& u, int threads) {
     for (std::size_t k = begin; k < end; ++k) {
       Unit& unit = units_[k];
       const Pair& pair = pairs_[unit.pair];
-      const bool repair = !pair.scheme.linear && !pair.def->small_sliding &&
-                          (repair_once_ ? evaluations_ == 1
-                                        : evaluations_ > 1 && evaluations_ <= kRepairEvaluations);
-      sums[k] = evaluate_unit(unit, u, repair);
+      Repairing repairing = Repairing::None;
+      if (!pair.scheme.linear && !pair.def->small_sliding) {
+        if (repair_once_)
+          repairing = evaluations_ == 1 ? Repairing::All : Repairing::WithoutElement;
+        else if (evaluations_ > 1 && evaluations_ <= kRepairEvaluations)
+          repairing = Repairing::All;
+      }
+      sums[k] = evaluate_unit(unit, u, repairing);
     }
   });
   sums_ = {};
@@ -613,6 +619,34 @@ void ContactSystem::set_stabilisation(Real factor) {
   stabilisation_ = factor;
   repair_once_ = true;
   evaluations_ = 0;
+}
+
+Real ContactSystem::step_fraction_to_contact(const VecX& u, const VecX& du) const {
+  struct Move {
+    Real from, to;  // gap along the frozen normal before and after the step
+    bool pressing;
+  };
+  std::vector<Move> moves;
+  const VecX stepped = u + du;
+  for (const Unit& unit : units_) {
+    if (unit.points.empty() || pairs_[unit.pair].scheme.linear) continue;
+    const UnitGeometry before = geometry(unit, u), after = geometry(unit, stepped);
+    const auto gap = [](const UnitGeometry& g, const Point& pt) {
+      return pt.frozen.normal.dot(
+          frozen_relative_position(g.slave.x, g.masters[pt.frozen_master].x, pt.frozen));
+    };
+    for (const Point& pt : unit.points)
+      if (pt.frozen_master >= 0)
+        moves.push_back({gap(before, pt), gap(after, pt), pt.trial.pressure > 0});
+  }
+  Real deepest = 0;
+  for (const Move& m : moves)
+    if (m.pressing) deepest = std::max({deepest, -m.from, -m.to});
+  Real fraction = 1;
+  for (const Move& m : moves)
+    if (!m.pressing && m.from > 0 && m.to < -deepest)
+      fraction = std::min(fraction, (m.from + deepest) / (m.from - m.to));
+  return fraction;
 }
 
 std::optional<Real> ContactSystem::approach_ratio() const {

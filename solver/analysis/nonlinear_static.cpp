@@ -432,7 +432,7 @@ class NonlinearStatic {
     // The skew part (friction slip) is empty while the tangent is symmetric.
     const auto& sys = a.ev.system;
     timed(times_.factorisation, [&] { spd_.factorise(plan.pattern, sys.values, report, sys.skew); });
-    const VecX dx = timed(times_.solve, [&] {
+    VecX dx = timed(times_.solve, [&] {
       return spd_.solve(plan.pattern, sys.values, sys.rhs, report, sys.skew);
     });
     if (report.stabilised && !warned_zero_energy_mode_) {
@@ -443,6 +443,12 @@ class NonlinearStatic {
                           (held.empty() ? "" : "; " + held + ", and nothing touches"));
     }
     const VecX x_old = a.x, rhs_old = a.ev.system.rhs, no_step = VecX::Zero(dofs.n_prescribed());
+    if (stabilisation_.engaged()) {
+      // Weak springs hold a point contact's rocking: a full step swings it far through the
+      // contact that stops it, and the next iteration swings it back.
+      const Real fraction = contact_.step_fraction_to_contact(a.u, dofs.expand(x_old + dx, a.g) - a.u);
+      if (fraction < 1) dx *= std::max(fraction, kMinContactStep);
+    }
     a.x = x_old + dx;
     VecX u_new = dofs.expand(a.x, a.g);
     if (sc.step->nlgeom) layout_.relinearise(u_new);
@@ -641,6 +647,8 @@ class NonlinearStatic {
   int total_iterations_ = 0, drift_redos_ = 0, drift_refreezes_ = 0;
   /// A drift that survives this many refreezes comes from the increment's size: redo it smaller.
   static constexpr int kMaxRefreezes = 3;
+  /// The shortest share of a Newton step that stabilised solves take on their way to contact.
+  static constexpr Real kMinContactStep = 1e-3;
   Real step_stabilisation_energy_ = 0;
   Real max_mises_ = 0, max_contact_pressure_ = 0, total_contact_force_ = 0;
 };

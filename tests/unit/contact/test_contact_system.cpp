@@ -251,6 +251,83 @@ TEST(ContactSystem, APointThatPassesThroughAnOfferedFaceAfterItsPairingIsPairedA
   }
 }
 
+TEST(ContactSystem, AStabilisedSolveCreatesContactElementsAndDeletesNone) {
+  // Upper block 0.01 above the lower one, beyond the creation clearance: its points have no
+  // contact elements at the solve's pairing. Pushed 1e-3 into the lower block later in a
+  // stabilised solve, they get them (a rocking punch must meet the next ring of nodes there),
+  // and keep them when lifted back (the tension tail of the quasi-bilinear law: no chatter).
+  // In an ordinary solve past its pairing evaluations the same points pass through unheld.
+  for (const char* name : {"nts", "gc7"}) {
+    SCOPED_TRACE(name);
+    fixtures::TwoBlocks t;
+    t.gap = 0.01;
+    model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
+    const VecX u0 = VecX::Zero(3 * m.n_nodes());
+    VecX u = u0;
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -0.011;
+    ContactSystem stabilised(m);
+    stabilised.begin_increment(u0, {.step = 2}, 1);
+    stabilised.set_stabilisation(1e-2);
+    stabilised.update(u0, 1);
+    EXPECT_EQ(stabilised.n_active(), 0);
+    stabilised.update(u, 1);
+    const int created = stabilised.n_active();
+    EXPECT_GT(created, 0);
+    EXPECT_EQ(stabilised.unheld_penetration(u).depth, 0);
+    stabilised.update(u0, 1);
+    EXPECT_EQ(stabilised.n_active(), created);
+    ContactSystem ordinary(m);
+    ordinary.begin_increment(u0, {.step = 2}, 1);
+    for (int evaluation = 0; evaluation < 12; ++evaluation) ordinary.update(u0, 1);
+    ordinary.update(u, 1);
+    EXPECT_EQ(ordinary.n_active(), 0);
+  }
+}
+
+TEST(ContactSystem, AStepStopsWhereItWouldCarryAnOpenPointThroughItsMaster) {
+  // Upper block 0.01 above the lower one. A step of 0.02 down would carry every point 0.01
+  // through: half of it reaches contact. A step of 0.005 reaches nothing. Tilted so that only
+  // the nodes at the far edge go 0.02 down (nts), half of it again. Once the block presses
+  // 5e-4 deep, a further step down carries the pressing points along: nothing to stop. The
+  // linear variant's steps are never cut (its frozen points are all evaluated in each update).
+  for (const char* name : {"nts", "gc7", "lgc7"}) {
+    SCOPED_TRACE(name);
+    fixtures::TwoBlocks t;
+    t.gap = 0.01;
+    model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
+    ContactSystem sys(m);
+    const VecX u0 = VecX::Zero(3 * m.n_nodes());
+    const auto down = [&](Real uniform, Real tilt) {
+      VecX d = VecX::Zero(3 * m.n_nodes());
+      for (int n = 0; n < m.n_nodes(); ++n)
+        if (m.mesh.node_ids[n] >= 100000)
+          d(3 * n + 2) = -uniform - tilt * (m.mesh.coords(n, 0) - t.offset_x);
+      return d;
+    };
+    sys.begin_increment(u0, {.step = 2}, 1);
+    sys.update(u0, 1);
+    EXPECT_FALSE(sys.wants_line_search(2));  // nothing active
+    const bool linear = std::string(name) == "lgc7";  // its steps are not cut
+    EXPECT_NEAR(sys.step_fraction_to_contact(u0, down(0.02, 0)), linear ? 1 : 0.5, 1e-12);
+    EXPECT_EQ(sys.step_fraction_to_contact(u0, down(0.005, 0)), 1);
+    if (std::string(name) == "nts") {
+      EXPECT_NEAR(sys.step_fraction_to_contact(u0, down(0, 0.02)), 0.5, 1e-12);
+    }
+    const VecX pressed = down(0.0105, 0);
+    sys.update(pressed, 1);
+    ASSERT_GT(sys.n_active(), 0);
+    EXPECT_EQ(sys.step_fraction_to_contact(pressed, down(0.001, 0)), 1);
+    // The line search from the second iteration on while contact is active: always for the
+    // linear variant, for the others in the solves that pair once (a stabilised one here).
+    EXPECT_EQ(sys.wants_line_search(2), linear);
+    sys.set_stabilisation(1e-2);
+    sys.update(pressed, 1);
+    EXPECT_FALSE(sys.wants_line_search(1));
+    EXPECT_TRUE(sys.wants_line_search(2));
+  }
+}
+
 TEST(ContactSystem, StabilisationSpringsActOnTheChangeOfTheGapSinceTheIncrementStarted) {
   // Upper block 0.01 above the lower one: no contact. Moved down by 0.004 within the
   // increment, every paired point's spring (factor * K per unit area) is stretched by 0.004:
