@@ -52,6 +52,14 @@ VecX pressed(const model::Model& m, Real depth, unsigned seed) {
   return u;
 }
 
+/// The upper block moved down by `depth`.
+VecX upper_lowered(const model::Model& m, Real depth) {
+  VecX u = VecX::Zero(3 * m.n_nodes());
+  for (int n = 0; n < m.n_nodes(); ++n)
+    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -depth;
+  return u;
+}
+
 /// The points of the committed state, as the writers get them.
 std::vector<output::ContactPointRecord> committed_points(const ContactSystem& sys, const VecX& u) {
   output::Frame frame;
@@ -219,9 +227,7 @@ TEST(ContactSystem, APointThatPassesThroughAnOfferedFaceAfterItsPairingIsPairedA
     model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
     ContactSystem sys(m);
     const VecX u0 = VecX::Zero(3 * m.n_nodes());
-    VecX u = u0;
-    for (int n = 0; n < m.n_nodes(); ++n)
-      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -0.011;
+    const VecX u = upper_lowered(m, 0.011);
     sys.begin_increment(u0, {.step = 2}, 1);
     for (int evaluation = 0; evaluation < 12; ++evaluation) sys.update(u0, 1);
     sys.update(u, 1);
@@ -263,9 +269,7 @@ TEST(ContactSystem, AStabilisedSolveCreatesContactElementsAndDeletesNone) {
     t.gap = 0.01;
     model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
     const VecX u0 = VecX::Zero(3 * m.n_nodes());
-    VecX u = u0;
-    for (int n = 0; n < m.n_nodes(); ++n)
-      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -0.011;
+    const VecX u = upper_lowered(m, 0.011);
     ContactSystem stabilised(m);
     stabilised.begin_increment(u0, {.step = 2}, 1);
     stabilised.set_stabilisation(1e-2);
@@ -339,9 +343,7 @@ TEST(ContactSystem, StabilisationSpringsActOnTheChangeOfTheGapSinceTheIncrementS
     model::Model m = fixtures::two_blocks_model(t, 1e5, scheme(name));
     ContactSystem sys(m);
     const VecX u0 = VecX::Zero(3 * m.n_nodes());
-    VecX u = u0;
-    for (int n = 0; n < m.n_nodes(); ++n)
-      if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -0.004;
+    const VecX u = upper_lowered(m, 0.004);
     sys.begin_increment(u0, {.step = 2}, 1);
     sys.set_stabilisation(1e-2);
     sys.update(u, 1);
@@ -517,14 +519,6 @@ model::Model bowl_under_small_block() {
     if (m.mesh.node_ids[n] < 100000 && m.mesh.coords(n, 2) > 1 - 1e-9)
       m.mesh.coords(n, 2) -= 0.3 * std::pow(m.mesh.coords(n, 0) - 0.5, 2);
   return m;
-}
-
-/// The upper block moved down by `depth`.
-VecX upper_lowered(const model::Model& m, Real depth) {
-  VecX u = VecX::Zero(3 * m.n_nodes());
-  for (int n = 0; n < m.n_nodes(); ++n)
-    if (m.mesh.node_ids[n] >= 100000) u(3 * n + 2) = -depth;
-  return u;
 }
 
 TEST(ContactSystem, FrozenDriftSeesSlidingOverACurvedMaster) {
