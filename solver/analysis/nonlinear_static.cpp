@@ -391,6 +391,7 @@ class NonlinearStatic {
           if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
           contact_.set_stabilisation(stabilisation_.factor());
           level_it = 0;
+          level_pairings = 0;
           continue;
         }
       }
