@@ -617,8 +617,7 @@ void ContactSystem::update(const VecX& u, int threads) {
 void ContactSystem::set_stabilisation(Real factor) {
   if (factor == stabilisation_) return;
   stabilisation_ = factor;
-  repair_once_ = true;
-  evaluations_ = 0;
+  pair_again();
 }
 
 Real ContactSystem::step_fraction_to_contact(const VecX& u, const VecX& du) const {
