@@ -9,14 +9,14 @@ void StabilisationSchedule::engage() {
   factor_ = kFirstFactor;
   held_factor_ = 0;
   step_ = kLevelRatio;
-  releasing_ = release_failed_ = false;
+  releasing_ = release_failed_ = last_release_tried_ = false;
   released_energy_ = 0;
 }
 
 void StabilisationSchedule::disengage() {
   factor_ = held_factor_ = 0;
   step_ = kLevelRatio;
-  releasing_ = release_failed_ = false;
+  releasing_ = release_failed_ = last_release_tried_ = false;
   released_energy_ = 0;
 }
 
@@ -33,14 +33,20 @@ StabilisationSchedule::Next StabilisationSchedule::converged(Real energy, Real s
   const Real ratio =
       approach ? std::clamp(*approach, kMinApproachRatio, kMaxApproachRatio) : step_;
   step_ = std::max(kLevelRatio, step_ * step_);
-  if (factor_ * ratio < kMinFactor) return Next::GiveUp;
-  factor_ *= ratio;
+  if (factor_ * ratio >= kMinFactor) {
+    factor_ *= ratio;
+    return Next::Continue;
+  }
+  // The weakest level: one more release from here, since the contact set may have changed
+  // while the springs weakened (a tilting point contact reached the node that holds it).
+  if (share > kReleaseShare || last_release_tried_) return Next::GiveUp;
+  last_release_tried_ = releasing_ = true;
   return Next::Continue;
 }
 
 StabilisationSchedule::Next StabilisationSchedule::failed() {
   if (releasing_) {
-    if (factor_ * step_ < kMinFactor) return Next::GiveUp;
+    if (last_release_tried_ || factor_ * step_ < kMinFactor) return Next::GiveUp;
     releasing_ = false;
     release_failed_ = true;
     factor_ *= step_;

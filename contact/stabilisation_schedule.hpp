@@ -8,7 +8,8 @@
 // something touches by 10. When contact carries nearly all the load the springs are released
 // and the increment converges without them; if that release fails, the levels go on down
 // (from the last stabilised solution) until the springs carry a negligible share of the normal
-// force, which leaves the solution of the unstabilised problem to within that share. A level
+// force, which leaves the solution of the unstabilised problem to within that share, or until
+// the weakest level, which is released once more before the increment fails. A level
 // that fails is retried from the last converged one with half the step in log(factor) (a
 // point contact that tilts as the springs weaken must reach its next node gradually, not jump
 // past it); each converged level doubles the step again, up to the factor of 10.
@@ -63,7 +64,8 @@ class StabilisationSchedule {
   Next converged(Real energy, Real share, std::optional<Real> approach);
   /// The current level, or the release, failed to converge: RestoreAndContinue goes back to
   /// the last converged level's solution with a milder factor (or springs one level weaker
-  /// after a failed release); GiveUp when no level converged yet or the step is exhausted.
+  /// after a failed release); GiveUp when no level converged yet, the step is exhausted or
+  /// the release from the weakest level failed.
   Next failed();
 
   /// The energy the springs held when they were released (that of the last converged level):
@@ -80,6 +82,7 @@ class StabilisationSchedule {
   Real step_ = kLevelRatio;      ///< between touching levels, halved in log per failed level
   bool releasing_ = false;
   bool release_failed_ = false;  ///< a release failed in this attempt: step down to negligible
+  bool last_release_tried_ = false;  ///< the release from the weakest level (once an attempt)
   Real released_energy_ = 0;     ///< spring energy of the last converged level
 };
 

@@ -1,8 +1,9 @@
 // The contact stabilisation's continuation: while nothing touches, the springs weaken just
 // enough to land the bodies on contact; then they step down by 10 until contact carries the
 // load and are released; a failed release goes back one level further down, a failed level is
-// retried from the last converged one with half the step in log(factor), and springs that
-// carry a negligible share count as released; what the release removed is reported.
+// retried from the last converged one with half the step in log(factor), springs that carry a
+// negligible share count as released, and the weakest level is released once more before the
+// increment fails; what the release removed is reported.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,6 +70,30 @@ TEST(StabilisationSchedule, GivesUpWhenTheFirstLevelFailsOrTheSpringsGetTooWeak)
   while (s.converged(1, 1, std::nullopt) == Next::Continue) ++levels;
   EXPECT_EQ(levels, 7);  // 1e-2 ... 1e-9: weaker springs no longer hold a body numerically
   EXPECT_GE(s.factor(), S::kMinFactor);
+}
+
+TEST(StabilisationSchedule, TheWeakestLevelIsReleasedOnceMoreBeforeGivingUp) {
+  S s;
+  s.engage();
+  s.converged(1, 0.001, std::nullopt);
+  ASSERT_TRUE(s.releasing());
+  ASSERT_EQ(s.failed(), Next::RestoreAndContinue);  // 1e-3, no release while stepping down
+  int levels = 0;
+  while (!s.releasing()) {
+    ASSERT_EQ(s.converged(0.5, 5e-6, std::nullopt), Next::Continue);
+    ++levels;
+  }
+  EXPECT_EQ(levels, 7);  // 1e-3 ... 1e-9 converged, then the release from 1e-9
+  EXPECT_EQ(s.factor(), 0);
+  EXPECT_EQ(s.failed(), Next::GiveUp);  // only once
+  // The same release converging ends the increment with the weakest level's energy.
+  s.engage();
+  s.converged(1, 0.001, std::nullopt);
+  s.failed();
+  while (!s.releasing()) s.converged(0.25, 5e-6, std::nullopt);
+  EXPECT_EQ(s.converged(0, 0, std::nullopt), Next::Done);
+  EXPECT_DOUBLE_EQ(s.absorbed_energy(), 0.25);
+  EXPECT_DOUBLE_EQ(s.held_factor(), 1e-9);
 }
 
 TEST(StabilisationSchedule, AFailedLevelIsRetriedWithHalfTheStepWhichThenGrowsBack) {
