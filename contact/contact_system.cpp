@@ -44,7 +44,8 @@ Real nodal_area_weight(element::Topology topo, int local) {
 
 }  // namespace
 
-ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
+ContactSystem::ContactSystem(const model::Model& model)
+    : model_(model), no_displacement_(VecX::Zero(3 * model.mesh.coords.rows())) {
   for (const auto& def : model.contact_pairs) {
     Pair pair;
     pair.def = &def;
@@ -91,6 +92,7 @@ ContactSystem::ContactSystem(const model::Model& model) : model_(model) {
 
 void ContactSystem::begin_step(const model::Step& step) {
   frictional_ = false;
+  reference_areas_ = !step.nlgeom;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     Pair& pair = pairs_[p];
     pair.active = p >= step.contact_pair_active.size() || step.contact_pair_active[p];
@@ -172,10 +174,15 @@ Real ContactSystem::nodal_area(const Pair& pair, int node, const VecX& u) const 
 
 Real ContactSystem::point_area(const Unit& unit, const Point& pt, const UnitGeometry& g,
                                const VecX& u) const {
+  // Small strain measures areas, as stresses, in the reference configuration: a pressure per
+  // deformed area would differ from the stress below it by the surface strain.
+  const VecX& at = reference_areas_ ? no_displacement_ : u;
   // Node-to-surface: ccx's nodal share of the faces at the node (for a node-based slave
   // surface, the exterior faces of the mesh there, as ccx 2.20 computes it).
-  if (unit.node < 0) return pt.ref_weight * surface_point(g.slave, pt.xi_s).jacobian;
-  return pt.ref_weight * nodal_area(pairs_[unit.pair], unit.node, u);
+  if (unit.node < 0)
+    return pt.ref_weight *
+           surface_point(reference_areas_ ? slave_geometry(unit, at) : g.slave, pt.xi_s).jacobian;
+  return pt.ref_weight * nodal_area(pairs_[unit.pair], unit.node, at);
 }
 
 std::vector<AabbTree> ContactSystem::master_trees(const VecX& u) const {

@@ -359,6 +359,8 @@ class ContactSystem {
   /// first update only (then those without element), and the line search is on.
   bool repair_once_ = false;
   Real stabilisation_ = 0;
+  bool reference_areas_ = true;  ///< small strain: point areas of the undeformed surfaces
+  VecX no_displacement_;         ///< the reference configuration's displacements
   bool frictional_ = false;     ///< some pair has friction (or is TIED) in the current step
   Sums sums_;                   ///< of the last update
 };

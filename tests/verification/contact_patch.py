@@ -21,7 +21,10 @@ no worse than ccx. Every other scheme must converge and is reported: nts and gau
 expected to fail the test (thesis table 7: sigma_zz from -3.99 to 0.356 and from -2.52 to
 1.21), and the table shows by how much. ccx's columns are the reference: its surface to
 surface must pass at 1e-3 on the affine (undistorted) variants -- a check that the deck's
-exact state is right -- and its node to surface is reported.
+exact state is right -- and its node to surface is reported. On faces that have grown before
+the last increment (the Poisson variant) ccx's contact pressure is force per area at the start
+of that increment (0.997 measured): there its stresses are the deck check and kontakt's
+CPRESS is held to 1e-3 regardless.
 
 Without --kontakt only the ccx columns run (what CI can run before contact lands).
 
@@ -65,13 +68,19 @@ VARIANTS = {
     "wedge15_wedge6": dict(upper="C3D15", lower="C3D6", n_upper=3, n_lower=4, distortion=0.25),
     "hex20_tet10": dict(upper="C3D20", lower="C3D10", n_upper=3, n_lower=2),
     "hex20r_swapped": dict(upper="C3D10", lower="C3D20R", n_upper=2, n_lower=4, slave="lower"),
+    # The faces grow sideways by nu / E = 3e-3 and the second increment starts on faces grown
+    # by half of that: a pressure per deformed area would be 0.3 to 0.6 % low.
+    "poisson": dict(upper="C3D8", lower="C3D20", n_upper=3, n_lower=4, poisson=0.3,
+                    young_upper=100.0, young_lower=100.0, increments=2),
 }
 
 
 def measure(result_dir, name):
     """{szz min, szz max, point CPRESS min, max, nodal CPRESS min, max} of a run; nodal values
-    over the nodes in contact (CPRESS != 0), None when the run wrote no nodal results."""
+    over the nodes in contact (CPRESS != 0), None when the run wrote no nodal results. All of
+    the last increment's output (the exact state is the full load's)."""
     blocks = datfile.parse(os.path.join(result_dir, name + ".dat"))
+    blocks = [b for b in blocks if b.time == max(b.time for b in blocks)]
     szz = [row[4] for b in blocks if b.kind == "stresses" for row in b.rows]
     contact = datfile.find(blocks, "contact stress")
     first_value = 2 if contact.columns.startswith("slave element+face") else 1
@@ -101,9 +110,10 @@ def runs_of_variant(args, name, model):
                                                  () if args.no_ccx else solvers.CCX_TYPES)]
 
 
-def evaluate(rep, variant, affine, runs, gap=0.0):
+def evaluate(rep, variant, affine, runs, gap=0.0, grown=False):
     """Checks and prints one variant. With a gap, ccx's columns are reported only (ccx often
-    fails to close it); kontakt's must converge."""
+    fails to close it); kontakt's must converge. `grown`: the faces grow before the last
+    increment, where ccx's pressure per area at its start is not a reference."""
     figures = {}
     for label, what, run, name in runs:
         if gap == 0 or what not in solvers.CCX_TYPES:
@@ -114,6 +124,8 @@ def evaluate(rep, variant, affine, runs, gap=0.0):
                                            run.result_dir, name)
     reference = figures.get("ccx surface to surface")
     floor = errors(reference) if reference else (0.0, 0.0)
+    if grown:
+        floor = (floor[0], 0.0)
     tolerance = tuple(max(TOLERANCE, e) if math.isfinite(e) else TOLERANCE for e in floor)
     rows = []
     for label, what, run, _ in runs:
@@ -124,8 +136,8 @@ def evaluate(rep, variant, affine, runs, gap=0.0):
         elif what in EXPECTED_TO_FAIL:
             requirement = "expected to fail"
         elif what == "SURFACE TO SURFACE" and affine and gap == 0:
-            limit = (TOLERANCE, TOLERANCE)
-            requirement = f"<= {TOLERANCE:g} (deck check)"
+            limit = (TOLERANCE, math.inf if grown else TOLERANCE)
+            requirement = f"<= {TOLERANCE:g}{' szz' if grown else ''} (deck check)"
         else:
             requirement = "reported"
         found = figures.get(label)
@@ -136,8 +148,9 @@ def evaluate(rep, variant, affine, runs, gap=0.0):
         if limit:
             rep.check(f"{variant} {label}: max |szz + 1| <= {limit[0]:.3g}",
                       stress_error <= limit[0], f"{stress_error:.3e}")
-            rep.check(f"{variant} {label}: max |nodal CPRESS - 1| <= {limit[1]:.3g}",
-                      pressure_error <= limit[1], f"{pressure_error:.3e}")
+            if math.isfinite(limit[1]):
+                rep.check(f"{variant} {label}: max |nodal CPRESS - 1| <= {limit[1]:.3g}",
+                          pressure_error <= limit[1], f"{pressure_error:.3e}")
         nodes = found["nodes"] or ("-", "-")
         rows.append([label, run.status, run.iterations]
                     + [f"{v:.4f}" for v in found["szz"]] + [f"{stress_error:.2e}"]
@@ -201,8 +214,9 @@ def main():
     for name, kwargs in variants:
         model = patch.patch(**kwargs, gap=args.gap)
         print(f"-- {name}: {model.notes[0].split(': ', 1)[1]}")
+        grown = kwargs.get("poisson", 0) > 0 and kwargs.get("increments", 1) > 1
         evaluate(rep, name, not kwargs.get("distortion"), runs_of_variant(args, name, model),
-                 args.gap)
+                 args.gap, grown)
     for deck in args.deck:
         name = os.path.basename(deck)[:-4]
         print(f"-- deck {deck}")

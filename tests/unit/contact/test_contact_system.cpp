@@ -148,6 +148,42 @@ INSTANTIATE_TEST_SUITE_P(ContactSystem, EveryScheme,
                          ::testing::Values("nts", "gauss", "lgauss", "gc1", "gc7", "lgc1", "lgc3",
                                            "lgc7", "lgc12"));
 
+TEST_P(EveryScheme, SmallStrainPressesOnUndeformedAreasAndNlgeomOnDeformedOnes) {
+  // Both blocks stretched 1 % in plane, the upper one lowered by a uniform depth: the slave
+  // points carry the undeformed area in small strain (a pressure is then the stress under
+  // it, as the Poisson patch test checks) and the deformed one under NLGEOM (Cauchy).
+  for (const bool nlgeom : {false, true}) {
+    fixtures::TwoBlocks t;
+    t.lower = {"C3D8", 3, 1};
+    t.upper = {"C3D8", 2, 1};
+    t.upper_size = 0.6;
+    const Real stretch = 0.01, depth = 1e-4, penalty = 1e5;
+    model::Model m = fixtures::two_blocks_model(t, penalty, scheme(GetParam()));
+    m.steps[0].nlgeom = nlgeom;
+    ContactSystem sys(m);
+    sys.begin_step(m.steps[0]);
+    VecX u = upper_lowered(m, depth);
+    for (int n = 0; n < m.n_nodes(); ++n)
+      for (int c = 0; c < 2; ++c) u(3 * n + c) = stretch * (m.mesh.coords(n, c) - 0.5);
+    sys.begin_increment(u, {.step = 2}, 1);
+    for (int k = 0; k < 8; ++k) sys.update(u, 1);
+    VecX f;
+    assembled(sys, u, f, nullptr);
+    sys.commit();
+    Real area = 0, pressure = 0, push = 0;
+    for (const auto& r : committed_points(sys, u)) {
+      area += r.area;
+      pressure = std::max(pressure, r.pressure);  // uniform: K depth (the law's, for nts)
+    }
+    for (int n = 0; n < m.n_nodes(); ++n)
+      if (m.mesh.node_ids[n] >= 100000) push -= f(3 * n + 2);  // internal force: pushed up
+    const Real expected = 0.36 * (nlgeom ? (1 + stretch) * (1 + stretch) : 1);
+    EXPECT_NEAR(area, expected, 1e-10) << (nlgeom ? "NLGEOM" : "small strain");
+    EXPECT_NEAR(pressure, penalty * depth, 0.01 * penalty * depth);
+    EXPECT_NEAR(push, pressure * expected, 1e-10) << (nlgeom ? "NLGEOM" : "small strain");
+  }
+}
+
 TEST(ContactSystem, GaussCutAreasSumToEachSlaveFaceArea) {
   // Upper faces fully inside the master surface: the overlap areas of each slave face add up
   // to its area, for linear and quadratic, quad and triangle faces, rotated and offset.
