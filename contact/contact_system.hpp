@@ -336,10 +336,11 @@ class ContactSystem {
   };
   /// Which points of the nonlinear variants an evaluation pairs again.
   enum class Repairing {
-    None,             ///< the pairing stays (linear variants, SMALL SLIDING, later evaluations)
+    None,             ///< the pairing stays (linear variants, SMALL SLIDING, the first
+                      ///< evaluation of an increment)
     All,              ///< every point (the first evaluations of an increment or solve)
     WithoutElement,   ///< the points without contact element: elements are created, never
-                      ///< deleted (the rest of a stabilised solve)
+                      ///< deleted (the later evaluations)
   };
   /// Evaluates one unit into its points' trial states and its groups.
   Sums evaluate_unit(Unit& unit, const VecX& u, Repairing repairing);

@@ -249,11 +249,12 @@ TEST(ContactSystem, InitialOverlapIsRampedOutOverStepOne) {
   for (const auto& r : committed_points(sys, u)) EXPECT_NEAR(r.clearance, -1e-3, 1e-12);
 }
 
-TEST(ContactSystem, APointThatPassesThroughAnOfferedFaceAfterItsPairingIsPairedAgain) {
+TEST(ContactSystem, APointThatArrivesAfterThePairingEvaluationsGetsItsElement) {
   // Upper block 0.01 above the lower one: paired with the faces under it at the increment's
   // start, but without contact elements (beyond the creation clearance c0 sqrt(A)). Moved
-  // 0.011 down once the solve no longer pairs, its points sit 1e-3 deep in faces they were
-  // offered and carry nothing: wrong as it stands. Paired again, they press, and keep pressing.
+  // 0.011 down once the solve no longer pairs every point, its points are 1e-3 deep in faces
+  // they were offered: as they stand (no evaluation there yet) they carry nothing, which the
+  // acceptance refuses and pairs again; evaluated there, they get their elements and press.
   // The linear variant evaluates its frozen points in every update: nothing to pair again.
   for (const char* name : {"nts", "gc7", "lgc7"}) {
     SCOPED_TRACE(name);
@@ -266,15 +267,15 @@ TEST(ContactSystem, APointThatPassesThroughAnOfferedFaceAfterItsPairingIsPairedA
     const VecX u = upper_lowered(m, 0.011);
     sys.begin_increment(u0, {.step = 2}, 1);
     for (int evaluation = 0; evaluation < 12; ++evaluation) sys.update(u0, 1);
-    sys.update(u, 1);
+    EXPECT_EQ(sys.n_active(), 0);
     EXPECT_EQ(sys.missed_contact(u).depth, 0);  // every face under the points was offered
     if (linear) {
+      sys.update(u, 1);
       EXPECT_GT(sys.n_active(), 0);
       EXPECT_EQ(sys.unheld_penetration(u).depth, 0);
       EXPECT_TRUE(sys.accept(u, /*check_drift=*/false).accepted);
       continue;
     }
-    EXPECT_EQ(sys.n_active(), 0);
     EXPECT_NEAR(sys.unheld_penetration(u).depth, 1e-3, 1e-9);
     const Acceptance again = sys.accept(u, /*check_drift=*/false);
     EXPECT_FALSE(again.accepted);
@@ -282,12 +283,12 @@ TEST(ContactSystem, APointThatPassesThroughAnOfferedFaceAfterItsPairingIsPairedA
     EXPECT_TRUE(again.pair_again);
     EXPECT_NE(again.reason.find("without contact element penetrates its master by 0.001"),
               std::string::npos);
-    sys.pair_again();
-    sys.update(u, 1);
+    sys.update(u, 1);  // evaluation 14: past the pairing evaluations
     const int pressing = sys.n_active();
     EXPECT_GT(pressing, 0);
     EXPECT_EQ(sys.unheld_penetration(u).depth, 0);
     EXPECT_TRUE(sys.accept(u, /*check_drift=*/false).accepted);
+    sys.pair_again();  // and paired again from scratch, they press alike
     for (int evaluation = 0; evaluation < 12; ++evaluation) sys.update(u, 1);
     EXPECT_EQ(sys.n_active(), pressing);
   }
@@ -298,7 +299,7 @@ TEST(ContactSystem, AStabilisedSolveCreatesContactElementsAndDeletesNone) {
   // contact elements at the solve's pairing. Pushed 1e-3 into the lower block later in a
   // stabilised solve, they get them (a rocking punch must meet the next ring of nodes there),
   // and keep them when lifted back (the tension tail of the quasi-bilinear law: no chatter).
-  // In an ordinary solve past its pairing evaluations the same points pass through unheld.
+  // An ordinary solve past its pairing evaluations creates and keeps them alike.
   for (const char* name : {"nts", "gc7"}) {
     SCOPED_TRACE(name);
     fixtures::TwoBlocks t;
@@ -320,8 +321,11 @@ TEST(ContactSystem, AStabilisedSolveCreatesContactElementsAndDeletesNone) {
     ContactSystem ordinary(m);
     ordinary.begin_increment(u0, {.step = 2}, 1);
     for (int evaluation = 0; evaluation < 12; ++evaluation) ordinary.update(u0, 1);
-    ordinary.update(u, 1);
     EXPECT_EQ(ordinary.n_active(), 0);
+    ordinary.update(u, 1);
+    EXPECT_EQ(ordinary.n_active(), created);
+    ordinary.update(u0, 1);
+    EXPECT_EQ(ordinary.n_active(), created);
   }
 }
 
