@@ -12,7 +12,13 @@ namespace {
 
 class UmfpackSolver final : public LinearSolver {
  public:
-  UmfpackSolver() { umfpack_dl_defaults(control_); }
+  explicit UmfpackSolver(UmfpackStrategy strategy) {
+    umfpack_dl_defaults(control_);
+    if (strategy == UmfpackStrategy::Symmetric) {
+      control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+      control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+    }
+  }
   ~UmfpackSolver() override { release(); }
   UmfpackSolver(const UmfpackSolver&) = delete;
   UmfpackSolver& operator=(const UmfpackSolver&) = delete;
@@ -79,6 +85,8 @@ class UmfpackSolver final : public LinearSolver {
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
+std::unique_ptr<LinearSolver> make_umfpack_solver(UmfpackStrategy strategy) {
+  return std::make_unique<UmfpackSolver>(strategy);
+}
 
 }  // namespace kontakt::linsolve

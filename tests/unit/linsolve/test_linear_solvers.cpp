@@ -75,6 +75,31 @@ TEST(LinearSolvers, UmfpackSolvesUnsymmetricSystem) {
   EXPECT_LT((A * solver->solve(b) - b).norm(), 1e-10 * b.norm());
 }
 
+TEST(LinearSolvers, UmfpackSymmetricStrategySolvesSymmetricIndefiniteSystems) {
+  // A saddle point (a stiffness with two constraint rows: zeros on their diagonal) and a
+  // stiffness with a negative eigenvalue: the symmetric strategy's diagonal pivots must give
+  // way to off-diagonal ones where the diagonal is zero.
+  const int n = 40;
+  MatX K = spd_matrix(n);
+  K(3, 3) = -5.0 * n;
+  MatX saddle = MatX::Zero(n + 2, n + 2);
+  saddle.topLeftCorner(n, n) = spd_matrix(n);
+  for (int c = 0; c < 2; ++c)
+    for (int j = 0; j < n; j += 3 + c) {
+      saddle(n + c, j) = 1.0 + j;
+      saddle(j, n + c) = 1.0 + j;
+    }
+  for (const MatX* A : {&K, &saddle}) {
+    const VecX b = VecX::Random(A->rows());
+    std::vector<Real> values;
+    const auto p = dense_pattern(*A, false, values);
+    auto solver = linsolve::make_umfpack_solver(linsolve::UmfpackStrategy::Symmetric);
+    solver->analyze(p);
+    solver->factorize(values);
+    EXPECT_LT((*A * solver->solve(b) - b).norm(), 1e-10 * b.norm()) << A->rows();
+  }
+}
+
 TEST(LinearSolvers, CholmodNamesTheEquationOfAZeroPivot) {
   MatX A = spd_matrix(10);
   A.row(6).setZero();
