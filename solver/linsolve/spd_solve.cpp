@@ -116,19 +116,11 @@ void SpdSolve::factorise_indefinite(const assembly::SparsePattern& upper,
         full_.lower[next[i]] = 1;
         full_.source[next[i]++] = k;
       }
+    if (!lu_) lu_ = make_umfpack_solver(UmfpackStrategy::Symmetric);
+    lu_->analyze(full_.pattern);
     full_.of_col_start = upper.col_start;
     full_.of_row_index = upper.row_index;
-    symmetric_lu_.analysed = unsymmetric_lu_.analysed = false;
   }
-  Lu& lu = skew.empty() ? symmetric_lu_ : unsymmetric_lu_;
-  if (!lu.solver)
-    lu.solver = make_umfpack_solver(skew.empty() ? UmfpackStrategy::Symmetric
-                                                 : UmfpackStrategy::General);
-  if (!lu.analysed) {
-    lu.solver->analyze(full_.pattern);
-    lu.analysed = true;
-  }
-  lu_ = lu.solver.get();
   std::vector<Real> full_values(full_.source.size());
   for (std::size_t k = 0; k < full_values.size(); ++k) {
     full_values[k] = values[full_.source[k]];

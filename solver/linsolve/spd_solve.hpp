@@ -69,14 +69,7 @@ class SpdSolve {
   bool stabilised_ = false;
   bool indefinite_ = false;
   bool unsymmetric_ = false;
-  /// An LU solver and whether it has analysed full_'s pattern.
-  struct Lu {
-    std::unique_ptr<LinearSolver> solver;
-    bool analysed = false;
-  };
-  Lu symmetric_lu_;    ///< symmetric indefinite K (UMFPACK's symmetric strategy)
-  Lu unsymmetric_lu_;  ///< K with a skew part (its general strategy)
-  LinearSolver* lu_ = nullptr;  ///< the one that holds the current factors
+  std::unique_ptr<LinearSolver> lu_;  ///< UMFPACK, its symmetric strategy
   FullMatrix full_;
 };
 

@@ -75,10 +75,11 @@ TEST(LinearSolvers, UmfpackSolvesUnsymmetricSystem) {
   EXPECT_LT((A * solver->solve(b) - b).norm(), 1e-10 * b.norm());
 }
 
-TEST(LinearSolvers, UmfpackSymmetricStrategySolvesSymmetricIndefiniteSystems) {
-  // A saddle point (a stiffness with two constraint rows: zeros on their diagonal) and a
-  // stiffness with a negative eigenvalue: the symmetric strategy's diagonal pivots must give
-  // way to off-diagonal ones where the diagonal is zero.
+TEST(LinearSolvers, UmfpackSymmetricStrategySolvesIndefiniteAndUnsymmetricStiffnesses) {
+  // A saddle point (a stiffness with two constraint rows: zeros on their diagonal), a
+  // stiffness with a negative eigenvalue and one with a skew part as large as friction's: the
+  // symmetric strategy's diagonal pivots must give way to off-diagonal ones where the
+  // diagonal is zero, and it must take unsymmetric values on the symmetric pattern.
   const int n = 40;
   MatX K = spd_matrix(n);
   K(3, 3) = -5.0 * n;
@@ -89,7 +90,11 @@ TEST(LinearSolvers, UmfpackSymmetricStrategySolvesSymmetricIndefiniteSystems) {
       saddle(n + c, j) = 1.0 + j;
       saddle(j, n + c) = 1.0 + j;
     }
-  for (const MatX* A : {&K, &saddle}) {
+  std::srand(5);
+  MatX skew = MatX::Random(n, n);
+  skew = (skew - skew.transpose()).eval() * (0.5 * n);
+  MatX slipping = spd_matrix(n) + skew;
+  for (const MatX* A : {&K, &saddle, &slipping}) {
     const VecX b = VecX::Random(A->rows());
     std::vector<Real> values;
     const auto p = dense_pattern(*A, false, values);
