@@ -83,7 +83,12 @@ Handle make_group(hid_t loc, const std::string& name) {
                 "create group " + name);
 }
 
-/// Dataset with chunking + deflate (level 4) when non-empty; 64-bit types throughout.
+/// Datasets smaller than this are stored contiguous: zlib sets up and clears a quarter megabyte
+/// of state per compressed chunk, which on a small model costs more than its whole solve.
+constexpr hsize_t kDeflateFromBytes = 64 * 1024;
+
+/// Dataset in 1 MiB chunks with deflate (level 4) from kDeflateFromBytes on, contiguous below;
+/// 64-bit types throughout.
 void write_dataset(hid_t loc, const std::string& name, hid_t mem_type, hid_t file_type,
                    const std::vector<hsize_t>& dims, const void* data) {
   Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose,
@@ -91,7 +96,7 @@ void write_dataset(hid_t loc, const std::string& name, hid_t mem_type, hid_t fil
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "dcpl");
   hsize_t total = 1;
   for (auto d : dims) total *= d;
-  if (total > 0) {
+  if (total > 0 && total * H5Tget_size(file_type) >= kDeflateFromBytes) {
     std::vector<hsize_t> chunk = dims;
     hsize_t row_bytes = H5Tget_size(file_type);
     for (std::size_t i = 1; i < dims.size(); ++i) row_bytes *= dims[i];
