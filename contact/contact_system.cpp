@@ -613,10 +613,8 @@ void ContactSystem::update(const VecX& u, int threads) {
       if (!pair.scheme.linear && !pair.def->small_sliding) {
         if (repair_once_)
           repairing = evaluations_ == 1 ? Repairing::All : Repairing::WithoutElement;
-        else if (evaluations_ > 1 && evaluations_ <= kRepairEvaluations)
-          repairing = Repairing::All;
-        else if (evaluations_ > kRepairEvaluations)
-          repairing = Repairing::WithoutElement;
+        else if (evaluations_ > 1)
+          repairing = evaluations_ <= kRepairEvaluations ? Repairing::All : Repairing::WithoutElement;
       }
       sums[k] = evaluate_unit(unit, u, repairing);
     }

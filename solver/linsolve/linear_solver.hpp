@@ -39,15 +39,11 @@ class LinearSolver {
 inline constexpr Real kSingularRcond = 1e-14;
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();
-/// How UMFPACK orders and pivots. General: its defaults (for our structurally symmetric
-/// patterns its automatic choice is the unsymmetric strategy with COLAMD). Symmetric: the
-/// symmetric strategy (diagonal pivots preferred, one METIS ordering of the pattern), which the
-/// stiffness solves use, indefinite or unsymmetric: on the a/h 6 Hertz sphere with nts (25 LU
-/// of 95 iterations) 54.2 -> 41.8 s and 535 -> 438 MB, on the frictional sliding block
-/// (--refine 4) factorisations 88.1 -> 60.8 s.
-enum class UmfpackStrategy { General, Symmetric };
-
-std::unique_ptr<LinearSolver> make_umfpack_solver(
-    UmfpackStrategy strategy = UmfpackStrategy::General);
+/// UMFPACK with the symmetric strategy (diagonal pivots preferred, one METIS ordering of the
+/// pattern) for every stiffness, indefinite or unsymmetric: its automatic choice on our
+/// structurally symmetric patterns is the unsymmetric strategy with COLAMD, slower (a/h 6 Hertz
+/// sphere with nts, 25 LU of 95 iterations: 54.2 -> 41.8 s, 535 -> 438 MB; frictional sliding
+/// block --refine 4: factorisations 88.1 -> 60.8 s).
+std::unique_ptr<LinearSolver> make_umfpack_solver();
 
 }  // namespace kontakt::linsolve

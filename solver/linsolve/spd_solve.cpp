@@ -116,7 +116,7 @@ void SpdSolve::factorise_indefinite(const assembly::SparsePattern& upper,
         full_.lower[next[i]] = 1;
         full_.source[next[i]++] = k;
       }
-    if (!lu_) lu_ = make_umfpack_solver(UmfpackStrategy::Symmetric);
+    if (!lu_) lu_ = make_umfpack_solver();
     lu_->analyze(full_.pattern);
     full_.of_col_start = upper.col_start;
     full_.of_row_index = upper.row_index;

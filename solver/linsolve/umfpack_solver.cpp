@@ -12,12 +12,10 @@ namespace {
 
 class UmfpackSolver final : public LinearSolver {
  public:
-  explicit UmfpackSolver(UmfpackStrategy strategy) {
+  UmfpackSolver() {
     umfpack_dl_defaults(control_);
-    if (strategy == UmfpackStrategy::Symmetric) {
-      control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
-      control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
-    }
+    control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
   }
   ~UmfpackSolver() override { release(); }
   UmfpackSolver(const UmfpackSolver&) = delete;
@@ -85,8 +83,8 @@ class UmfpackSolver final : public LinearSolver {
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> make_umfpack_solver(UmfpackStrategy strategy) {
-  return std::make_unique<UmfpackSolver>(strategy);
+std::unique_ptr<LinearSolver> make_umfpack_solver() {
+  return std::make_unique<UmfpackSolver>();
 }
 
 }  // namespace kontakt::linsolve
