@@ -9,7 +9,8 @@ import numpy as np
 sys.dont_write_bytecode = True  # keep the source tree clean
 
 import pareto  # noqa: E402
-import time_vs_error  # noqa: E402
+import time_vs_error  # noqa: E402  (puts tests/contact_models on the path)
+import solvers  # noqa: E402
 
 
 class Front(unittest.TestCase):
@@ -111,6 +112,33 @@ class Checks(unittest.TestCase):
         failures = time_vs_error.smoke_failures(rows)
         self.assertEqual(len(failures), 2)
         self.assertTrue(failures[0].startswith("patch random000 kontakt nts: not converged"))
+
+
+class Repeats(unittest.TestCase):
+    @staticmethod
+    def solves(*runs):
+        """solve_once() handing out the given (converged, wall, cpu) runs in turn, and the list
+        of those handed out."""
+        handed = []
+
+        def solve_once():
+            converged, wall, cpu = runs[len(handed)]
+            handed.append(solvers.Run(converged, "converged" if converged else "not converged",
+                                      3, 1, wall, 10.0, "dir", "", cpu))
+            return handed[-1]
+        return solve_once, handed
+
+    def test_a_short_run_keeps_its_least_times(self):
+        solve_once, handed = self.solves((True, 0.05, 0.04), (True, 0.02, 0.03), (True, 0.09, 0.01))
+        run = time_vs_error.least_wall_time(solve_once)
+        self.assertEqual(len(handed), time_vs_error.REPEATS)
+        self.assertEqual((run.wall, run.cpu), (0.02, 0.01))
+
+    def test_a_long_or_failed_run_is_solved_once(self):
+        for first in ((True, time_vs_error.SHORT_RUN_S, 1.0), (False, 0.01, 0.01)):
+            solve_once, handed = self.solves(first, (True, 0.001, 0.001))
+            run = time_vs_error.least_wall_time(solve_once)
+            self.assertEqual((len(handed), run.wall), (1, first[1]))
 
 
 class SphereCases(unittest.TestCase):

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Run time against error (issue 13, first slice): kontakt's contact schemes and ccx 2.20's two
-pair types on the same decks of problems with a known answer, one run each, one after the other;
+pair types on the same decks of problems with a known answer, one after the other (a run under
+SHORT_RUN_S is solved REPEATS times and keeps its least wall time, both solvers alike);
 wall time, Newton iterations, peak memory and the errors of every run in DIR/time_vs_error.csv,
 one PNG per problem (error against wall time, each solver's Pareto front as a step line) and
 the per-problem dominance verdict in DIR/verdict.txt.
@@ -75,9 +76,9 @@ no less accurate (tests/bench/pareto.py).
   time_vs_error.py --kontakt ... --out DIR --smoke                   # CI size, checked
 
 --smoke: patch 2 variants, sphere a/h 4, the penalty study at K a/E* 10 and the increment study
-at 1 increment (drift check on and off) on a/h 4, the cube at 4^3 against a 6^3 reference (the
-punch is not in it: nts does not converge on its 4^3 mesh at this placement, an open issue 9
-case the full study reports), line Hertz level 1 (C3D8), Hueeber's blocks level 1 against a
+at 1 increment (drift check on and off) on a/h 4, the punch and the cube at 4^3 against 6^3
+references (the punch's coarse mesh is a hostile case: ccx's node to surface fails it, kontakt's
+nts must converge), line Hertz level 1 (C3D8), Hueeber's blocks level 1 against a
 level 3 reference (about 2 s), schemes nts gc7 lgc7 and
 ccx's two types (no drift study: verification_contact_sliding runs its model in CI); exit code
 1 when the CSV lacks a column or a row per (problem, solver, scheme, setting), or a kontakt run
@@ -137,7 +138,7 @@ FULL = dict(patch=6, ratios=[4, 6, 8, 12], sphere_elements=["C3D8", "C3D20"], li
             block_levels=[4, 8], block_reference=16, hueeber_levels=[2, 3, 4, 5],
             hueeber_reference=6, schemes=list(solvers.SCHEMES))
 SMOKE = dict(patch=2, ratios=[4], sphere_elements=["C3D8"], line_elements=["C3D8"], line_levels=[1], penalties=[10],
-             penalty_ratio=4, increments=[1], increment_ratio=4, slides=[], blocks=["cube"],
+             penalty_ratio=4, increments=[1], increment_ratio=4, slides=[], blocks=["punch", "cube"],
              block_levels=[4], block_reference=6, hueeber_levels=[1], hueeber_reference=3,
              schemes=["nts", "gc7", "lgc7"])
 DRIFT_OFF = ("--drift-check", "off")
@@ -150,6 +151,10 @@ DEFAULT_SEED = 2031  # not one the schemes were tuned on (contact_patch.py's def
 # errors below the resolution of the printed results (ccx's .frd: 6 digits, E12.5) cannot be
 # told apart: fronts, verdicts and plots take them as equal to it
 ERROR_FLOOR = 1e-5
+# a process start alone varies by tens of milliseconds on a shared machine, more than a small
+# deck's whole solve: such runs are repeated and keep their least wall time
+SHORT_RUN_S = 1.0
+REPEATS = 3
 # errors within 1 % of each other are equal for the verdict: the measures (six printed digits,
 # a fit over a few nodes) do not resolve finer, and a 4th-digit difference is no finding
 ERROR_TOLERANCE = 0.01
@@ -360,6 +365,18 @@ def row_of(case, solver, scheme, run):
     return row
 
 
+def least_wall_time(solve_once):
+    """The Run of solve_once(); a converged run under SHORT_RUN_S is solved again up to REPEATS
+    times in all and carries the least wall and CPU time of its solves."""
+    run = solve_once()
+    for _ in range(REPEATS - 1):
+        if not run.converged or run.wall >= SHORT_RUN_S:
+            break
+        again = solve_once()
+        run = dataclasses.replace(again, wall=min(run.wall, again.wall), cpu=min(run.cpu, again.cpu))
+    return run
+
+
 def run_all(all_cases, args, csv_path):
     """Solves every case with every column, writing each row as soon as it is measured."""
     ccx_types = () if args.no_ccx else solvers.CCX_TYPES
@@ -372,8 +389,8 @@ def run_all(all_cases, args, csv_path):
             decks = {t: solvers.write_deck(case.model, folder, t, case.name)
                      for t in solvers.CCX_TYPES}
             for solver, scheme, column in case_columns(case, args.schemes, args.kontakt, ccx_types):
-                run = solvers.solve(decks, folder, column, args.kontakt, args.timeout,
-                                    case.kontakt_args)
+                run = least_wall_time(lambda: solvers.solve(
+                    decks, folder, column, args.kontakt, args.timeout, case.kontakt_args))
                 row = row_of(case, solver, scheme, run)
                 writer.writerow(row)
                 f.flush()
