@@ -410,17 +410,28 @@ void ContactSystem::freeze(const Unit& unit, const UnitGeometry& g, Point& pt, c
   pt.frozen.area = point_area(unit, pt, g, u);
 }
 
-void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, int threads) {
+void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, int threads,
+                                    const VecX* predicted) {
   ctx_ = ctx;
   evaluations_ = 0;
   repair_once_ = false;
   stabilisation_ = 0;  // springs belong to one increment
+  const bool ahead = predicted && *predicted != u &&
+                     std::any_of(pairs_.begin(), pairs_.end(),
+                                 [](const Pair& p) { return p.scheme.linear; });
   const std::vector<AabbTree> trees = master_trees(u);
+  const std::vector<AabbTree> trees_ahead = ahead ? master_trees(*predicted) : trees;
   const std::vector<OldStates> old = committed_states();
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
-      find_candidates(units_[k], u, trees);
-      build_points(units_[k], u, old[k], nullptr);
+      // The nonlinear variants pair as they go, from the converged state.
+      if (ahead && pairs_[units_[k].pair].scheme.linear) {
+        find_candidates(units_[k], *predicted, trees_ahead);
+        build_points(units_[k], *predicted, old[k], &u);
+      } else {
+        find_candidates(units_[k], u, trees);
+        build_points(units_[k], u, old[k], nullptr);
+      }
     }
   });
   build_groups();

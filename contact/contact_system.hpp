@@ -119,8 +119,13 @@ class ContactSystem {
   void begin_step(const model::Step& step);
   /// Rebuilds the points at the converged displacements `u`; their friction state is moved
   /// over from the committed state of the old ones (node-to-surface: per slave node; else per
-  /// slave face, state_transfer). Also switches the stabilisation springs off.
-  void begin_increment(const VecX& u, const IncrementContext& ctx, int threads);
+  /// slave face, state_transfer). Also switches the stabilisation springs off. With
+  /// `predicted` (where the static predictor expects the increment to end, when it differs
+  /// from `u`) the linear variants freeze their geometry there as a refreeze does, relative
+  /// motion and offsets counted from `u`: a sliding increment's frozen projections then drift
+  /// by the prediction's error only, not by the whole slide.
+  void begin_increment(const VecX& u, const IncrementContext& ctx, int threads,
+                       const VecX* predicted = nullptr);
   /// Node lists of the contact groups of this increment (slave nodes first, then the master
   /// face's nodes); the same while begin_increment found the same candidates.
   const std::vector<std::vector<int>>& groups() const { return group_nodes_; }

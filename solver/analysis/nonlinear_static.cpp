@@ -3,7 +3,8 @@
 // A step ramps its loads and prescribed values from the previous step's end values to its own
 // (amplitudes, where given, drive them instead) and lets IncrementControl propose increments.
 // An increment starts from the converged state extrapolated by the static predictor; contact
-// builds its points and pairings there and fixes its groups in the sparsity pattern. Each
+// builds its points and pairings at the converged state (the linear variants freeze theirs at
+// the prediction) and fixes its groups in the sparsity pattern. Each
 // Newton iteration then
 //   solves K dx = T^T (f_ext - f_int - f_contact) (iteration 1 also moves the prescribed dofs
 //   to their new values through the linearised system), updates the displacements, evaluates
@@ -248,10 +249,10 @@ class NonlinearStatic {
     if (sc.step->nlgeom) layout_.relinearise(a.u);
     if (!contact_.empty()) {
       timed(times_.contact_search, [&] {
-        contact_.begin_increment(u_,  // pairings at the converged state, not the prediction
+        contact_.begin_increment(u_,
                                  {.step = sc.number, .increment = increments_->increment_number(),
                                   .fraction_start = a.t_old / sc.period, .fraction_end = a.ramp},
-                                 threads_);
+                                 threads_, &u_predicted);
       });
       timed(times_.pattern, [&] { layout_.set_contact_groups(contact_.groups(), *solver_, threads_); });
     }
