@@ -420,7 +420,8 @@ void ContactSystem::begin_increment(const VecX& u, const IncrementContext& ctx, 
                      std::any_of(pairs_.begin(), pairs_.end(),
                                  [](const Pair& p) { return p.scheme.linear; });
   const std::vector<AabbTree> trees = master_trees(u);
-  const std::vector<AabbTree> trees_ahead = ahead ? master_trees(*predicted) : trees;
+  const std::vector<AabbTree> trees_ahead =
+      ahead ? master_trees(*predicted) : std::vector<AabbTree>{};
   const std::vector<OldStates> old = committed_states();
   parallel_chunks(units_.size(), threads, [&](std::size_t begin, std::size_t end, int) {
     for (std::size_t k = begin; k < end; ++k) {
