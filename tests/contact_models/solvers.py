@@ -10,6 +10,7 @@ ones (tests/peer/run_peer.py's sta_counts).
 Converged: ccx exit code 0 and "Job finished" in its output; kontakt exit code 0 (3 means
 not converged, 2 input error, 4 numerical or internal error).
 """
+import json
 import os
 import signal
 import subprocess
@@ -79,6 +80,16 @@ def _message(log_path):
     with open(log_path, errors="replace") as f:
         lines = [ln.strip() for ln in f if ln.strip()]
     return next((ln for ln in lines if "error" in ln.lower()), lines[-1] if lines else "")
+
+
+def done_summary(result_dir, name):
+    """The summary of kontakt's `done` event in RESULT_DIR/NAME.log.jsonl ({} without one)."""
+    path = os.path.join(result_dir, name + ".log.jsonl")
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        done = [json.loads(line) for line in f if '"event":"done"' in line.replace(" ", "")]
+    return done[-1].get("summary", {}) if done else {}
 
 
 def _counts(sta_path):

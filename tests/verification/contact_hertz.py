@@ -35,7 +35,6 @@ Without --kontakt only the ccx columns run.
                    [--levels 1 2 3] [--ccx-nts] [--work DIR]
 """
 import argparse
-import json
 import math
 import os
 import sys
@@ -95,12 +94,7 @@ def relative_errors(m):
 
 def drift_actions(result_dir, name):
     """The `done` event's counts (refreezes, redos) of the drift check (None: not reported)."""
-    path = os.path.join(result_dir, name + ".log.jsonl")
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
-        done = [json.loads(line) for line in f if '"event":"done"' in line.replace(" ", "")]
-    summary = done[-1].get("summary", {}) if done else {}
+    summary = solvers.done_summary(result_dir, name)
     if "drift_redos" not in summary:
         return None
     return summary.get("drift_refreezes", 0), summary["drift_redos"]

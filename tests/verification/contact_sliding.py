@@ -21,7 +21,6 @@ ccx 2.20 (--ccx) solves the same decks as reference columns.
   contact_sliding.py --kontakt EXE [--schemes nts gc7 lgc7] [--increments 4] [--ccx]
 """
 import argparse
-import json
 import os
 import sys
 
@@ -51,17 +50,10 @@ def evaluate(model, label, run):
     checks = [("pressure turned after the slide", error <= TOLERANCE,
                f"max |p2 - p1 turned| / max p1 = {error:.3e}")]
     if label.startswith("kontakt l"):  # lgauss, lgc*: the linear variants
-        refreezes = done_summary(run.result_dir, "sliding").get("drift_refreezes", 0)
+        refreezes = solvers.done_summary(run.result_dir, "sliding").get("drift_refreezes", 0)
         checks.append(("refreezes fewer than increments", refreezes < run.increments,
                        f"{refreezes} refreezes in {run.increments} increments"))
     return checks
-
-
-def done_summary(result_dir, name):
-    """The summary of kontakt's `done` event in RESULT_DIR/NAME.log.jsonl."""
-    with open(os.path.join(result_dir, name + ".log.jsonl")) as f:
-        events = [json.loads(line) for line in f if line.strip()]
-    return next(e["summary"] for e in reversed(events) if e.get("event") == "done")
 
 
 def main():
