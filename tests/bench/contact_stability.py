@@ -36,6 +36,7 @@ status, iterations, increments, wall time); the decks stay in WORK/VARIANT/pNNN/
       --z -0.0002 0 1e-4 1e-3 1e-2                # overlap (argparse: not -2e-4), touching, gaps
   contact_stability.py --kontakt EXE --variants punch_c3d8 --n 4 6 8 12 16 --schemes lgc7
   contact_stability.py --kontakt EXE --friction slip --schemes lgc7   # friction (issue 11)
+  contact_stability.py --kontakt EXE --no-ccx ...   # kontakt's columns only
 """
 import argparse
 import concurrent.futures
@@ -154,6 +155,8 @@ def main():
                    help="exit 1 when lgc7 does not converge everywhere (convergence), or when "
                         "the whole goal is not met (goal)")
     p.add_argument("--work", default="contact_stability_work")
+    p.add_argument("--no-ccx", action="store_true",
+                   help="kontakt's schemes only (ccx's columns of the same seed measured before)")
     args = p.parse_args()
     if args.smoke:
         args.placements = min(args.placements, SMOKE["placements"])
@@ -163,7 +166,7 @@ def main():
         args.z = args.z or list(SMOKE["z"])
     args.work = os.path.abspath(args.work)
     os.makedirs(args.work, exist_ok=True)
-    columns = solvers.columns(args.schemes, args.kontakt)
+    columns = solvers.columns(args.schemes, args.kontakt, () if args.no_ccx else solvers.CCX_TYPES)
     start = time.perf_counter()
     results = {}
     with open(os.path.join(args.work, "runs.csv"), "w", newline="") as f, \

@@ -143,14 +143,19 @@ class Repeats(unittest.TestCase):
 
 class SphereCases(unittest.TestCase):
     def test_each_element_type_at_each_ratio(self):
-        size = dict(time_vs_error.SMOKE, patch=0, ratios=[4, 6], sphere_elements=["C3D8", "C3D20"],
+        size = dict(time_vs_error.SMOKE, patch=0, ratios=[4, 6], quadratic_ratios=[3],
+                    sphere_elements=["C3D8", "C3D20"],
                     line_elements=[], penalties=[], increments=[], slides=[], blocks=[],
                     hueeber_levels=[])
         study = time_vs_error.cases(size, seed=1)
         self.assertEqual([c.setting for c in study],
-                         ["C3D8 a/h 4", "C3D8 a/h 6", "C3D20 a/h 4", "C3D20 a/h 6"])
+                         ["C3D8 a/h 4", "C3D8 a/h 6", "C3D20 a/h 3"])
         types = [{e.etype for e in [c.model.upper.mesh]} for c in study]
-        self.assertEqual(types, [{"C3D8"}, {"C3D8"}, {"C3D20"}, {"C3D20"}])
+        self.assertEqual(types, [{"C3D8"}, {"C3D8"}, {"C3D20"}])
+
+    def test_the_full_study_meshes_both_element_types_at_the_same_node_spacing(self):
+        self.assertEqual([2 * r for r in time_vs_error.FULL["quadratic_ratios"]],
+                         time_vs_error.FULL["ratios"])
 
     def test_the_full_study_has_both_element_types(self):
         self.assertEqual(time_vs_error.FULL["sphere_elements"], ["C3D8", "C3D20"])
