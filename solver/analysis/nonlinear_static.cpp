@@ -279,6 +279,18 @@ class NonlinearStatic {
     int level_it = 0;       // iterations of the current level (of the attempt, unstabilised)
     int refreezes = 0;      // of the attempt's drifted contact geometry
     int level_pairings = 0; // of the current stabilised level
+    // Springs from the start of the attempt, for a reason the warning names.
+    const auto engage_from_start = [&](const std::string& why) {
+      warn(sc.number, "increment " + std::to_string(increments_->increment_number()) + ": " +
+                          why + "; contact stabilisation engaged");
+      stabilisation_.engage();
+      contact_.set_stabilisation(stabilisation_.factor());
+      a.x = x_start;
+      a.u = u_start;
+      if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
+      at_start = true;
+      level_it = 0;
+    };
     for (int it = 1;; ++it) {
       if (options_.cancel && options_.cancel->load())
         throw Cancelled("cancelled in step " + std::to_string(sc.number) + ", increment " +
@@ -311,15 +323,7 @@ class NonlinearStatic {
         const std::string held = bodies_held_only_by_contact(model_, layout_.dofs());
         if (!held.empty()) verdict.reason += "; " + held;
         engaged_because = verdict.reason;
-        warn(sc.number, "increment " + std::to_string(increments_->increment_number()) + ": " +
-                            verdict.reason + "; contact stabilisation engaged");
-        stabilisation_.engage();
-        contact_.set_stabilisation(stabilisation_.factor());
-        a.x = x_start;
-        a.u = u_start;
-        if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
-        at_start = true;
-        level_it = 0;
+        engage_from_start(verdict.reason);
         continue;
       }
       using Next = contact::StabilisationSchedule::Next;
@@ -393,6 +397,19 @@ class NonlinearStatic {
           contact_.set_stabilisation(stabilisation_.factor());
           level_it = 0;
           level_pairings = 0;
+          continue;
+        }
+      }
+      if (!stabilisation_.engaged() && !contact_.empty() &&
+          options_.contact_stabilisation == ContactStabilisation::Auto) {
+        // Before cutting back, the same increment with springs where a body only contact
+        // holds: a point contact that rocks past a limit of its equilibrium (a coarse
+        // punch's apex node, tilting) needs the whole increment to reach the nodes that hold
+        // it, and a smaller one only crawls towards that limit.
+        const std::string held = bodies_held_only_by_contact(model_, layout_.dofs());
+        if (!held.empty()) {
+          engaged_because = held;
+          engage_from_start(verdict.reason + "; " + held);
           continue;
         }
       }

@@ -31,7 +31,10 @@ apex pressed 3e-4 deep (their contact elements are decided at pairing, and the t
 it). Converged, no node of the punch that carries no pressure may lie deeper below the lower
 block's lowest top node than the deepest one that does. A third (x 0.004, y 0.162, 73.2
 degrees) still ends on springs it cannot leave: converged it must be held likewise, failed it
-must say so (not only the last divergence).
+must say so (not only the last divergence). A fourth, at 6^3 (x -0.116, y 0.142, 23.9
+degrees), tilts past a limit of its apex-only equilibrium, where smaller increments only crawl
+towards the limit: it must converge (it does since a failed attempt is retried with springs at
+its size before it is cut back).
 
   contact_stabilisation.py --kontakt EXE [--work DIR] [--smoke] [--only NAME ...]
 """
@@ -85,7 +88,7 @@ GENERATED = {  # name -> (model, schemes)
                                                rotation=66), ("lgc7", "gc7")),
 }
 SMOKE = ("patch_thesis", "cube_c3d8", "punch_c3d8", "contact3", "hueeber1", "rocking_punch",
-         "unheld_punch", "stuck_punch", "thesis_punch_8")
+         "unheld_punch", "stuck_punch", "thesis_punch_8", "limit_punch")
 
 
 def final_fields(result_dir, name):
@@ -210,10 +213,13 @@ def unheld_depths(result_dir, name):
 # name: (placement, whether it must converge, elements per edge). thesis_punch_8: the 4^3
 # rocking_punch placement at 8^3, where ccx 2.20's node to surface fails; kontakt's did too
 # (272 iterations) until points that arrive after the pairing evaluations got their elements.
+# limit_punch: tilts past a limit of its apex-only equilibrium; it failed (326 iterations)
+# until a failed attempt was retried with springs at its size before cutting back.
 ROCKING_PUNCHES = {"rocking_punch": (dict(x=0.05, y=-0.03, rotation=15.0), True, 4),
                    "unheld_punch": (dict(x=0.047, y=-0.149, rotation=50.2), True, 4),
                    "stuck_punch": (dict(x=0.004, y=0.162, rotation=73.2), False, 4),
-                   "thesis_punch_8": (dict(x=0.05, y=-0.03, rotation=15.0), True, 8)}
+                   "thesis_punch_8": (dict(x=0.05, y=-0.03, rotation=15.0), True, 8),
+                   "limit_punch": (dict(x=-0.116, y=0.142, rotation=23.9), True, 6)}
 
 
 def rocking_punch(exe, work, timeout, name):
