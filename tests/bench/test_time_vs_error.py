@@ -1,7 +1,9 @@
 """Unit tests of the pure parts of time_vs_error.py: Pareto fronts and the dominance verdict
 (pareto.py), the headline error, the CSV completeness check and the smoke's convergence check.
 Run: /usr/bin/python3 -m unittest test_time_vs_error   (in this folder)"""
+import os
 import sys
+import tempfile
 import unittest
 
 import numpy as np
@@ -112,6 +114,17 @@ class Checks(unittest.TestCase):
         failures = time_vs_error.smoke_failures(rows)
         self.assertEqual(len(failures), 2)
         self.assertTrue(failures[0].startswith("patch random000 kontakt nts: not converged"))
+
+
+class Plot(unittest.TestCase):
+    def test_the_time_axis_holds_every_run_from_seconds_to_minutes(self):
+        rows = [dict(row(problem="hertz_sphere", error="0.33"), wall_s="2.16"),
+                dict(row(problem="hertz_sphere", scheme="nts", error="0.055"), wall_s="513.7"),
+                dict(row(problem="hertz_sphere", solver="ccx", scheme="surface-to-surface",
+                         error="0.026"), wall_s="814.1")]
+        with tempfile.TemporaryDirectory() as d:
+            left, right = time_vs_error.plot("hertz_sphere", rows, os.path.join(d, "p.png"))
+        self.assertTrue(0 < left < 2.16 and right > 814.1, (left, right))
 
 
 class Repeats(unittest.TestCase):

@@ -472,7 +472,7 @@ def verdict_lines(problem, rows):
 
 def plot(problem, rows, path):
     """Error (log) against wall time (log): a marker per solver and scheme, each front a step
-    line."""
+    line. Returns the time axis' limits."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -502,8 +502,9 @@ def plot(problem, rows, path):
             colour, style, width = styles[name]
             ax.step(*zip(*front, (right, front[-1][1])), where="post", color=colour,
                     linestyle=style, linewidth=width, label=f"front: {name}")
-    ax.set_xlim(right=right)
+    # Log scale first: a linear autoscale's left limit is negative for runs from 2 s to 1000 s.
     ax.set_xscale("log")
+    ax.set_xlim(0.8 * min(float(r["wall_s"]) for r in rows), right)
     ax.set_yscale("log")
     ax.set_xlabel("wall time [s]")
     ax.set_ylabel(f"{problem} error ({' / '.join(HEADLINE[problem])}, largest magnitude)")
@@ -514,6 +515,7 @@ def plot(problem, rows, path):
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+    return ax.get_xlim()
 
 
 # problem: (x of a row's setting, x label, plot title, error label). The plots read the CSV
