@@ -36,6 +36,7 @@
 #include "material/von_mises.hpp"
 #include "nonlinear/convergence.hpp"
 #include "nonlinear/increment_control.hpp"
+#include "nonlinear/pseudo_transient.hpp"
 #include "nonlinear/static_predictor.hpp"
 
 namespace kontakt::analysis {
@@ -267,6 +268,7 @@ class NonlinearStatic {
     const VecX x_start = a.x, u_start = a.u;
     VecX x_saved, u_saved;  // the last converged stabilised level
     Real saved_share = 0;   // ... and the share of the normal force its springs carried
+    Real saved_energy = 0;  // ... and the energy they held
     std::string engaged_because, release_failure;
     const auto mode = options_.contact_stabilisation;
     if (!contact_.empty() && (mode == ContactStabilisation::Always ||
@@ -275,10 +277,12 @@ class NonlinearStatic {
     else
       stabilisation_.disengage();
     contact_.set_stabilisation(stabilisation_.factor());
+    pseudo_.stop();
     bool at_start = true;   // the iterate sits where the attempt started
     int level_it = 0;       // iterations of the current level (of the attempt, unstabilised)
     int refreezes = 0;      // of the attempt's drifted contact geometry
     int level_pairings = 0; // of the current stabilised level
+    bool pseudo_tried = false;  // the attempt ran its pseudo-transient continuation
     // Springs from the start of the attempt, for a reason the warning names.
     const auto engage_from_start = [&](const std::string& why) {
       warn(sc.number, "increment " + std::to_string(increments_->increment_number()) + ": " +
@@ -291,12 +295,30 @@ class NonlinearStatic {
       at_start = true;
       level_it = 0;
     };
+    // Where the springs find no way off: pseudo-transient continuation from the last level
+    // they held (once an attempt), which lets a point contact fall onto what holds it.
+    const auto damp_from_saved_level = [&](const std::string& why) {
+      if (pseudo_tried || x_saved.size() == 0) return false;
+      pseudo_tried = true;
+      warn(sc.number, "increment " + std::to_string(increments_->increment_number()) + ": " + why +
+                          "; pseudo-transient continuation from the last stabilised level");
+      stabilisation_.disengage();
+      contact_.set_stabilisation(0);
+      contact_.pair_again();
+      pseudo_.start(saved_energy);
+      a.x = x_saved;
+      a.u = u_saved;
+      if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
+      level_it = 0;
+      level_pairings = 0;
+      return true;
+    };
     for (int it = 1;; ++it) {
       if (options_.cancel && options_.cancel->load())
         throw Cancelled("cancelled in step " + std::to_string(sc.number) + ", increment " +
                         std::to_string(increments_->increment_number()));
       nonlinear::Verdict verdict;
-      bool singular = false;
+      bool singular = false, threw = false;
       try {
         if (level_it == 0) {
           a.ev = evaluate(sc, a, a.u,
@@ -308,15 +330,16 @@ class NonlinearStatic {
       } catch (const linsolve::SingularMatrix& e) {
         if (level_it == 0) convergence_->begin_increment();
         verdict = failure(sc, singular_system_error(model_, layout_.dofs(), e).what());
-        singular = true;
+        singular = threw = true;
       } catch (const SolverError& e) {  // inverted element, non-finite contact: cut back
         if (level_it == 0) convergence_->begin_increment();
         verdict = failure(sc, e.what());
+        threw = true;
       }
       ++total_iterations_;
       report_iteration(sc, a, it, verdict);
 
-      if (singular && !contact_.empty() && !stabilisation_.engaged() &&
+      if (singular && !contact_.empty() && !stabilisation_.engaged() && !pseudo_.active() &&
           options_.contact_stabilisation != ContactStabilisation::Never) {
         // A body that only contact holds does not touch (yet): hold it with springs instead,
         // from the start of the attempt.
@@ -349,6 +372,7 @@ class NonlinearStatic {
         x_saved = a.x;
         u_saved = a.u;
         saved_share = contact_.stabilisation_share();
+        saved_energy = contact_.stabilisation_energy();
         const Next next = stabilisation_.converged(contact_.stabilisation_energy(),
                                                    contact_.stabilisation_share(),
                                                    contact_.approach_ratio());
@@ -362,6 +386,7 @@ class NonlinearStatic {
           verdict = failure(sc, release_failure.empty()
                                     ? stabilisation_diagnosis_
                                     : "releasing the springs failed: " + release_failure);
+          if (damp_from_saved_level(verdict.reason)) continue;
         }
       }
       if (verdict.kind == nonlinear::Verdict::Kind::Converged) {
@@ -378,13 +403,21 @@ class NonlinearStatic {
         return cut_back(sc, a, it, verdict);
       }
       if (verdict.kind != nonlinear::Verdict::Kind::Cutback) continue;
-      if (stabilisation_.engaged()) {
+      if (pseudo_.active()) {
+        // The damped motion may pass through worse residuals on its way (a snap): only its
+        // step budget, or a state it cannot evaluate, ends it.
+        if (!threw && !pseudo_.exhausted()) continue;
+        verdict.reason = "pseudo-transient continuation failed after " +
+                         std::to_string(pseudo_.steps()) + " steps: " + verdict.reason;
+      } else if (stabilisation_.engaged()) {
         const bool release = stabilisation_.releasing();
         if (release) release_failure = verdict.reason;
         const Real held = stabilisation_.held_factor();
         const Next next = stabilisation_.failed();
-        if (next == Next::GiveUp && held > 0)
+        if (next == Next::GiveUp && held > 0) {
           stabilisation_diagnosis_ = no_release(held, saved_share);
+          if (damp_from_saved_level(verdict.reason + "; " + stabilisation_diagnosis_)) continue;
+        }
         if (next == Next::RestoreAndContinue) {
           warn(sc.number, "increment " + std::to_string(increments_->increment_number()) +
                               (release ? ": releasing the contact stabilisation failed ("
@@ -400,7 +433,7 @@ class NonlinearStatic {
           continue;
         }
       }
-      if (!stabilisation_.engaged() && !contact_.empty() &&
+      if (!stabilisation_.engaged() && !pseudo_tried && !contact_.empty() &&
           options_.contact_stabilisation == ContactStabilisation::Auto) {
         // Before cutting back, the same increment with springs where a body only contact
         // holds: a point contact that rocks past a limit of its equilibrium (a coarse
@@ -450,9 +483,28 @@ class NonlinearStatic {
     linsolve::SpdSolveReport report;
     // The skew part (friction slip) is empty while the tangent is symmetric.
     const auto& sys = a.ev.system;
-    timed(times_.factorisation, [&] { spd_.factorise(plan.pattern, sys.values, report, sys.skew); });
+    // Pseudo-transient continuation damps every dof by its shift times its own stiffness, and
+    // shifts more while that is not enough to make the tangent positive definite.
+    std::vector<Real> damped;
+    VecX damping = VecX::Zero(pseudo_.active() ? plan.pattern.n : 0);
+    const std::vector<Real>* tangent = &sys.values;
+    for (;;) {
+      if (pseudo_.active() && pseudo_.shift() > 0) {
+        damped = sys.values;
+        for (int j = 0; j < plan.pattern.n; ++j) {
+          const Index d = plan.pattern.find(j, j);
+          damping[j] = pseudo_.shift() * std::abs(sys.values[d]);
+          damped[d] += damping[j];
+        }
+        tangent = &damped;
+      }
+      report = {};
+      timed(times_.factorisation,
+            [&] { spd_.factorise(plan.pattern, *tangent, report, sys.skew); });
+      if (!pseudo_.active() || !report.indefinite || !pseudo_.raise()) break;
+    }
     VecX dx = timed(times_.solve, [&] {
-      return spd_.solve(plan.pattern, sys.values, sys.rhs, report, sys.skew);
+      return spd_.solve(plan.pattern, *tangent, sys.rhs, report, sys.skew);
     });
     if (report.stabilised && !warned_zero_energy_mode_) {
       warned_zero_energy_mode_ = true;
@@ -462,9 +514,9 @@ class NonlinearStatic {
                           (held.empty() ? "" : "; " + held + ", and nothing touches"));
     }
     const VecX x_old = a.x, rhs_old = a.ev.system.rhs, no_step = VecX::Zero(dofs.n_prescribed());
-    if (stabilisation_.engaged()) {
-      // Weak springs hold a point contact's rocking: a full step swings it far through the
-      // contact that stops it, and the next iteration swings it back.
+    if (stabilisation_.engaged() || pseudo_.active()) {
+      // Weak springs (or weak damping) hold a point contact's rocking: a full step swings it
+      // far through the contact that stops it, and the next iteration swings it back.
       const Real fraction = contact_.step_fraction_to_contact(a.u, dofs.expand(x_old + dx, a.g) - a.u);
       if (fraction < 1) dx *= std::max(fraction, kMinContactStep);
     }
@@ -484,6 +536,10 @@ class NonlinearStatic {
         if (sc.step->nlgeom) layout_.relinearise(u_new);
         a.ev = evaluate(sc, a, u_new, no_step);
       }
+    }
+    if (pseudo_.active()) {
+      const VecX step = a.x - x_old;
+      pseudo_.stepped(a.ev.system.rhs.norm(), step.dot(damping.cwiseProduct(step)));
     }
     const Real c_max = max_abs(u_new - a.u);
     a.u = std::move(u_new);
@@ -565,8 +621,10 @@ class NonlinearStatic {
       // The energy the contact stabilisation absorbed beside the strain energy (Abaqus: ALLSD
       // and ALLIE); what the increment commits is the unstabilised equilibrium either way.
       const Real strain_energy = frame.ENER.dot(frame.ip_volume) + a.ev.connector_energy;
-      step_stabilisation_energy_ += stabilisation_.absorbed_energy();
-      increment.stabilisation_energy = stabilisation_.absorbed_energy();
+      const Real absorbed =
+          stabilisation_.absorbed_energy() + (pseudo_.active() ? pseudo_.absorbed_energy() : 0);
+      step_stabilisation_energy_ += absorbed;
+      increment.stabilisation_energy = absorbed;
       increment.strain_energy = strain_energy;
       if (frame.is_step_end && step_stabilisation_energy_ > 0.01 * std::abs(strain_energy))
         warn(sc.number, "the contact stabilisation absorbed " +
@@ -655,6 +713,7 @@ class NonlinearStatic {
   std::optional<nonlinear::IncrementControl> increments_;
   nonlinear::StaticPredictor predictor_;
   contact::StabilisationSchedule stabilisation_;
+  nonlinear::PseudoTransient pseudo_;  ///< of the attempt, where the springs found no way off
   bool retry_stabilised_ = false;  ///< the increment's last attempt failed (with contact)
   bool warned_zero_energy_mode_ = false;
   /// Why the contact stabilisation could not be released in an attempt of the increment being
