@@ -268,7 +268,6 @@ class NonlinearStatic {
     const VecX x_start = a.x, u_start = a.u;
     VecX x_saved, u_saved;  // the last converged stabilised level
     Real saved_share = 0;   // ... and the share of the normal force its springs carried
-    Real saved_energy = 0;  // ... and the energy they held
     std::string engaged_because, release_failure;
     const auto mode = options_.contact_stabilisation;
     if (!contact_.empty() && (mode == ContactStabilisation::Always ||
@@ -295,6 +294,14 @@ class NonlinearStatic {
       at_start = true;
       level_it = 0;
     };
+    // Back to the last converged stabilised level, for a new solve from there.
+    const auto restore_saved_level = [&] {
+      a.x = x_saved;
+      a.u = u_saved;
+      if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
+      level_it = 0;
+      level_pairings = 0;
+    };
     // Where the springs find no way off: pseudo-transient continuation from the last level
     // they held (once an attempt), which lets a point contact fall onto what holds it.
     const auto damp_from_saved_level = [&](const std::string& why) {
@@ -302,15 +309,11 @@ class NonlinearStatic {
       pseudo_tried = true;
       warn(sc.number, "increment " + std::to_string(increments_->increment_number()) + ": " + why +
                           "; pseudo-transient continuation from the last stabilised level");
+      pseudo_.start(stabilisation_.absorbed_energy());  // what the saved level's springs held
       stabilisation_.disengage();
       contact_.set_stabilisation(0);
       contact_.pair_again();
-      pseudo_.start(saved_energy);
-      a.x = x_saved;
-      a.u = u_saved;
-      if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
-      level_it = 0;
-      level_pairings = 0;
+      restore_saved_level();
       return true;
     };
     for (int it = 1;; ++it) {
@@ -372,7 +375,6 @@ class NonlinearStatic {
         x_saved = a.x;
         u_saved = a.u;
         saved_share = contact_.stabilisation_share();
-        saved_energy = contact_.stabilisation_energy();
         const Next next = stabilisation_.converged(contact_.stabilisation_energy(),
                                                    contact_.stabilisation_share(),
                                                    contact_.approach_ratio());
@@ -424,12 +426,8 @@ class NonlinearStatic {
                                        : ": a contact stabilisation level failed (") +
                               verdict.reason + "); back to the last converged level, with springs of " +
                               std::to_string(stabilisation_.factor()) + " times the penalty");
-          a.x = x_saved;
-          a.u = u_saved;
-          if (sc.step->nlgeom) layout_.relinearise(a.u);  // T at the restored iterate
+          restore_saved_level();
           contact_.set_stabilisation(stabilisation_.factor());
-          level_it = 0;
-          level_pairings = 0;
           continue;
         }
       }
