@@ -4,6 +4,7 @@
 #include "analysis/linear_static.hpp"
 #include "analysis/nonlinear_static.hpp"
 #include "app/monitor_files.hpp"
+#include "app/process_heap.hpp"
 #include "app/result_writers.hpp"
 #include "contact/adjust_nodes.hpp"
 #include "contact/tie_constraints.hpp"
@@ -142,6 +143,7 @@ RunOutcome run_job(const RunRequest& request, analysis::EventSink& events,
       MonitorFiles monitor(request.out_dir, request.job_name);
       fanout.add(monitor);
       if (request.threads > 0) linsolve::set_blas_threads(request.threads);
+      keep_freed_memory_in_process();  // a sanitizer's allocator keeps its own policy
       const model::Model model = read_model(request.deck, request.scheme);
       for (const auto& w : model.warnings)
         fanout.on_event({.kind = analysis::Event::Kind::Warning, .message = w});
