@@ -407,7 +407,7 @@ class NonlinearStatic {
       if (verdict.kind != nonlinear::Verdict::Kind::Cutback) continue;
       if (pseudo_.active()) {
         // The damped motion may pass through worse residuals on its way (a snap): only its
-        // step budget, or a state it cannot evaluate, ends it.
+        // step budget, a stall of its smallest residual, or a state it cannot evaluate ends it.
         if (!threw && !pseudo_.exhausted()) continue;
         verdict.reason = "pseudo-transient continuation failed after " +
                          std::to_string(pseudo_.steps()) + " steps: " + verdict.reason;

@@ -9,6 +9,7 @@ void PseudoTransient::start(Real held_energy) {
   shift_ = kFirstShift;
   residual_ = 0;
   steps_ = 0;
+  steps_since_best_ = 0;
   held_energy_ = held_energy;
   dissipated_ = 0;
 }
@@ -22,6 +23,12 @@ bool PseudoTransient::raise() {
 void PseudoTransient::stepped(Real residual, Real dissipated) {
   ++steps_;
   dissipated_ += dissipated;
+  if (steps_ == 1 || residual < best_residual_) {
+    best_residual_ = residual;
+    steps_since_best_ = 0;
+  } else {
+    ++steps_since_best_;
+  }
   const Real ratio = residual_ > 0 ? residual / residual_ : 1;  // the first step: no history
   shift_ = std::clamp(shift_ * std::clamp(ratio, 1 / kMaxChange, kMaxChange), 0.0, kMaxShift);
   residual_ = residual;

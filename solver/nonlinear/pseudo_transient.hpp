@@ -26,6 +26,10 @@ class PseudoTransient {
   static constexpr Real kMaxChange = 10;
   /// Steps of one continuation.
   static constexpr int kMaxSteps = 150;
+  /// Steps without a new smallest residual after which the motion has settled somewhere that
+  /// is not an equilibrium (contact chattering between two states): the snaps it is for set a
+  /// new smallest residual within 5 steps (22 continuations: coarse punches, gap patches).
+  static constexpr int kMaxStall = 30;
 
   bool active() const { return active_; }
   /// The shift of the next step (0: Newton).
@@ -46,14 +50,16 @@ class PseudoTransient {
   /// A step with the shift of shift() moved the solution by a damping energy `dissipated`
   /// and left the residual norm `residual`.
   void stepped(Real residual, Real dissipated);
-  /// The continuation used up its steps.
-  bool exhausted() const { return steps_ >= kMaxSteps; }
+  /// The continuation used up its steps, or kMaxStall of them found no smaller residual.
+  bool exhausted() const { return steps_ >= kMaxSteps || steps_since_best_ >= kMaxStall; }
 
  private:
   bool active_ = false;
   Real shift_ = 0;
   Real residual_ = 0;  ///< norm before the next step
   int steps_ = 0;
+  Real best_residual_ = 0;
+  int steps_since_best_ = 0;
   Real held_energy_ = 0;
   Real dissipated_ = 0;
 };

@@ -1,7 +1,8 @@
 // Pseudo-transient continuation's shift: it starts at kFirstShift, follows the residual
 // (switched evolution relaxation) by at most kMaxChange per step, reads 0 (a Newton step) once
 // below kNewtonShift, grows tenfold for an indefinite tangent up to kMaxShift, and the
-// continuation ends after kMaxSteps; the damping energy of the steps adds up to the springs'.
+// continuation ends after kMaxSteps, or after kMaxStall steps without a smaller residual; the
+// damping energy of the steps adds up to the springs'.
 #include <gtest/gtest.h>
 
 #include "nonlinear/pseudo_transient.hpp"
@@ -67,13 +68,33 @@ TEST(PseudoTransient, RaisesForIndefiniteTangentsUpToTheLargestShift) {
 TEST(PseudoTransient, EndsAfterItsSteps) {
   P p;
   p.start(0);
-  for (int i = 0; i < P::kMaxSteps - 1; ++i) p.stepped(1.0, 0);
+  Real residual = 1.0;
+  for (int i = 0; i < P::kMaxSteps - 1; ++i) p.stepped(residual *= 0.99, 0);
   EXPECT_FALSE(p.exhausted());
-  p.stepped(1.0, 0);
+  p.stepped(residual *= 0.99, 0);
   EXPECT_TRUE(p.exhausted());
   p.start(0.25);  // a new continuation starts afresh, from springs that held 0.25
   EXPECT_FALSE(p.exhausted());
   EXPECT_EQ(p.absorbed_energy(), 0.25);
   p.stepped(1.0, 0.5);
   EXPECT_EQ(p.absorbed_energy(), 0.75);
+}
+
+TEST(PseudoTransient, EndsWhenItsResidualStopsFallingButNotDuringASnap) {
+  P p;
+  p.start(0);
+  p.stepped(1.0, 0);
+  // A snap: the residual grows for kMaxStall - 1 steps, then falls below where it started.
+  for (int i = 1; i < P::kMaxStall; ++i) p.stepped(1.0 + i, 0);
+  EXPECT_FALSE(p.exhausted());
+  p.stepped(0.5, 0);
+  EXPECT_FALSE(p.exhausted());
+  // Chattering just above its best: kMaxStall steps without a smaller residual end it.
+  for (int i = 1; i < P::kMaxStall; ++i) p.stepped(i % 2 ? 0.6 : 0.5, 0);
+  EXPECT_FALSE(p.exhausted());
+  p.stepped(0.5, 0);
+  EXPECT_TRUE(p.exhausted());
+  EXPECT_LT(p.steps(), P::kMaxSteps);
+  p.start(0);
+  EXPECT_FALSE(p.exhausted());
 }
