@@ -6,17 +6,15 @@ namespace kontakt::contact {
 
 namespace {
 
-Real cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 /// Positive when p lies left of the directed edge a -> b (inside for a counter-clockwise clip).
-Real side(const Vec2& a, const Vec2& b, const Vec2& p) { return cross(b - a, p - a); }
+Real side(const Vec2& a, const Vec2& b, const Vec2& p) { return cross2(b - a, p - a); }
 
 }  // namespace
 
 Real signed_area(const Polygon2& polygon) {
   Real twice = 0;
   for (std::size_t i = 0, n = polygon.size(); i < n; ++i)
-    twice += cross(polygon[i], polygon[(i + 1) % n]);
+    twice += cross2(polygon[i], polygon[(i + 1) % n]);
   return 0.5 * twice;
 }
 

@@ -16,6 +16,9 @@ struct Triangle2 {
   Vec2 a, b, c;
 };
 
+/// z component of the cross product of two in-plane vectors (twice the signed triangle area).
+inline Real cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 /// Signed area (positive for counter-clockwise vertex order).
 Real signed_area(const Polygon2& polygon);
 

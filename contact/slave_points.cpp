@@ -49,8 +49,6 @@ const std::vector<std::vector<int>>& face_pieces(Topology topo) {
   }
 }
 
-Real cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 bool is_convex_ccw(const Polygon2& p) {
   for (std::size_t i = 0, n = p.size(); i < n; ++i)
     if (cross2(p[(i + 1) % n] - p[i], p[(i + 2) % n] - p[(i + 1) % n]) <= 0) return false;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "contact/contact_extrapolation.hpp"
+#include "contact/polygon_clipping.hpp"
 
 namespace kontakt::contact {
 
@@ -13,8 +14,6 @@ namespace {
 
 using element::Topology;
 using Triangle = std::array<int, 3>;
-
-Real cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// Whether p lies strictly inside the circumcircle of the counter-clockwise triangle abc.
 bool in_circumcircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& p) {

@@ -13,7 +13,7 @@ namespace kontakt::server::handlers {
 
 namespace {
 
-constexpr std::size_t kMaxNameLength = 200, kMaxLabels = 32, kMaxLabelValue = 256;
+constexpr std::size_t kMaxNameLength = 200, kMaxLabelValue = 256;
 
 }  // namespace
 

@@ -12,6 +12,9 @@
 
 namespace kontakt::server::handlers {
 
+/// The most labels a job carries (a sweep's row: its sweep's label and parameters included).
+inline constexpr std::size_t kMaxLabels = 32;
+
 /// The submission's options and deck, from the query and (for JSON bodies) the body.
 struct Submission {
   std::string media_type;  ///< text/plain, application/zip, ...

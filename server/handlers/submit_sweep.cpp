@@ -20,7 +20,6 @@ namespace {
 
 /// The label every row carries: sweep=<sweep id>.
 constexpr const char* kSweepLabel = "sweep";
-constexpr std::size_t kMaxLabels = 32;
 
 /// The request, read and checked.
 struct SweepRequest {

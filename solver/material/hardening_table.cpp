@@ -9,24 +9,6 @@
 
 namespace kontakt::material {
 
-namespace {
-
-/// Yield stress of segment k's linear extension at alpha (k = last: constant tail).
-Real segment_yield(const HardeningTable& table, std::size_t k, Real alpha) {
-  const auto& p = table.points;
-  if (k + 1 >= p.size()) return p.back().first;
-  const Real h = (p[k + 1].first - p[k].first) / (p[k + 1].second - p[k].second);
-  return p[k].first + h * (alpha - p[k].second);
-}
-
-Real segment_slope(const HardeningTable& table, std::size_t k) {
-  const auto& p = table.points;
-  if (k + 1 >= p.size()) return 0.0;
-  return (p[k + 1].first - p[k].first) / (p[k + 1].second - p[k].second);
-}
-
-}  // namespace
-
 void HardeningTable::validate() const {
   if (points.empty())
     throw std::invalid_argument("*PLASTIC: hardening table has no data lines");
@@ -52,12 +34,19 @@ std::size_t HardeningTable::segment(Real alpha) const {
   return static_cast<std::size_t>(it - points.begin()) - 1;
 }
 
-Real HardeningTable::yield(Real alpha) const {
-  if (alpha <= points.front().second) return points.front().first;
-  return segment_yield(*this, segment(alpha), alpha);
+HardeningPiece HardeningTable::piece(std::size_t k) const {
+  if (k + 1 >= points.size()) return {points.back().first, points.back().second, 0.0};
+  const auto& [y0, a0] = points[k];
+  const auto& [y1, a1] = points[k + 1];
+  return {y0, a0, (y1 - y0) / (a1 - a0), a1};
 }
 
-Real HardeningTable::slope(Real alpha) const { return segment_slope(*this, segment(alpha)); }
+Real HardeningTable::yield(Real alpha) const {
+  if (alpha <= points.front().second) return points.front().first;
+  return piece(segment(alpha)).at(alpha);
+}
+
+Real HardeningTable::slope(Real alpha) const { return piece(segment(alpha)).slope; }
 
 RadialReturn solve_radial_return(const HardeningTable& table, Real alpha_n, Real q_trial,
                                  Real shear_modulus) {
@@ -71,11 +60,12 @@ RadialReturn solve_radial_return(const HardeningTable& table, Real alpha_n, Real
   const Real scale = std::max(q_trial, table.yield(alpha_n));
   const int max_iter = static_cast<int>(table.points.size()) + 20;
   for (int it = 0; it < max_iter; ++it) {
-    const Real h = segment_slope(table, k);
+    const HardeningPiece segment = table.piece(k);
+    const Real h = segment.slope;
     if (!(g3 + h > 0.0))
       throw std::invalid_argument(
           "*PLASTIC: softening slope steeper than -3G makes the return mapping ill-posed");
-    const Real r = q_trial - g3 * da - segment_yield(table, k, alpha_n + da);
+    const Real r = q_trial - g3 * da - segment.at(alpha_n + da);
     if (std::abs(r) <= 1e-13 * scale && it > 0) return {da, h};
     const Real next = da + r / (g3 + h);
     if (k + 1 < table.points.size() && alpha_n + next > table.points[k + 1].second) {
@@ -85,10 +75,11 @@ RadialReturn solve_radial_return(const HardeningTable& table, Real alpha_n, Real
     }
     da = next;
   }
-  const Real r = q_trial - g3 * da - segment_yield(table, k, alpha_n + da);
+  const HardeningPiece last = table.piece(k);
+  const Real r = q_trial - g3 * da - last.at(alpha_n + da);
   if (!(std::abs(r) <= 1e-10 * scale) || !(da >= 0.0))
     throw SolverError("J2 return mapping: the local iteration did not converge");
-  return {da, segment_slope(table, k)};
+  return {da, last.slope};
 }
 
 }  // namespace kontakt::material

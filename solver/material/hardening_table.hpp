@@ -2,12 +2,20 @@
 // by the small-strain and the finite-strain J2 models.
 #pragma once
 
+#include <limits>
 #include <utility>
 #include <vector>
 
 #include "core/types.hpp"
 
 namespace kontakt::material {
+
+/// One linear piece of a hardening curve: its value at `start` plus slope times the distance,
+/// up to the next breakpoint `end` (infinity for the constant tail beyond the last row).
+struct HardeningPiece {
+  Real at_start = 0, start = 0, slope = 0, end = std::numeric_limits<Real>::infinity();
+  Real at(Real alpha) const { return at_start + slope * (alpha - start); }
+};
 
 /// Isotropic hardening curve as given under ccx/Abaqus *PLASTIC (HARDENING=ISOTROPIC):
 /// rows of (von Mises yield stress, equivalent plastic strain), plastic strain strictly
@@ -30,6 +38,8 @@ struct HardeningTable {
   /// Index k of the segment [points[k], points[k+1]) containing alpha; returns
   /// points.size()-1 for the constant tail beyond the last row.
   std::size_t segment(Real alpha) const;
+  /// Segment k as a linear piece (k = points.size()-1: the constant tail).
+  HardeningPiece piece(std::size_t k) const;
 };
 
 /// Root of the radial-return equation and the hardening slope there.

@@ -30,19 +30,6 @@ Eigen::Matrix<S, 6, 1> voigt6(const M3<S>& t) {
   return v;
 }
 
-/// One linear piece of a curve: value at `start` plus slope times the distance.
-struct Piece {
-  Real at_start = 0, start = 0, slope = 0, end = std::numeric_limits<Real>::infinity();
-  Real at(Real a) const { return at_start + slope * (a - start); }
-};
-
-Piece piece(const HardeningTable& t, std::size_t k) {
-  const auto& p = t.points;
-  if (k + 1 >= p.size()) return {p.back().first, p.back().second, 0.0};
-  return {p[k].first, p[k].second, (p[k + 1].first - p[k].first) / (p[k + 1].second - p[k].second),
-          p[k + 1].second};
-}
-
 /// Everything of the point at C (any scalar) for the pieces ki (radius) and kk (kinematic) the
 /// return ends on; `plastic` false: the elastic trial state.
 template <class S>
@@ -54,8 +41,8 @@ struct PointResponse {
 
 template <class S>
 PointResponse<S> respond(Real mu, Real bulk, const M3<S>& C, const M3<S>& P, const M3<S>& G,
-                         Real alpha_n, Real radius_n, Real hk_n, const Piece& radius,
-                         const Piece& kin, bool plastic) {
+                         Real alpha_n, Real radius_n, Real hk_n, const HardeningPiece& radius,
+                         const HardeningPiece& kin, bool plastic) {
   using std::pow;
   using std::sqrt;
   const S det = C.determinant();
@@ -113,13 +100,13 @@ J2FiniteKinematicResult j2_finite_kinematic(Real young, Real poisson,
 
   std::size_t ki = cyclic ? cyclic->segment(alpha_n) : 0, kk = kinematic.segment(alpha_n);
   auto radius_piece = [&](std::size_t k) {
-    return cyclic ? piece(*cyclic, k) : Piece{radius_n, 0.0, 0.0};
+    return cyclic ? cyclic->piece(k) : HardeningPiece{radius_n, 0.0, 0.0};
   };
   const auto trial = respond<Real>(mu, bulk, C, P, G, alpha_n, radius_n, hk_n, {}, {}, false);
   const bool plastic = trial.f_trial > 1e-10 * radius_n * std::sqrt(C.determinant());
   if (plastic) {  // walk the pieces until the return ends on the ones it was solved on
     for (std::size_t it = 0;; ++it) {
-      const Piece pr = radius_piece(ki), pk = piece(kinematic, kk);
+      const HardeningPiece pr = radius_piece(ki), pk = kinematic.piece(kk);
       const auto r = respond<Real>(mu, bulk, C, P, G, alpha_n, radius_n, hk_n, pr, pk, true);
       if (!(r.dg > 0) || it > kinematic.points.size() + (cyclic ? cyclic->points.size() : 0) + 2)
         throw SolverError("finite-strain kinematic J2: the return mapping failed");
@@ -140,7 +127,7 @@ J2FiniteKinematicResult j2_finite_kinematic(Real young, Real poisson,
     if (q >= 3) Cd(kJ[q], kI[q]).derivatives()[q] += 1.0;
   }
   const auto r = respond<Dual>(mu, bulk, Cd, P.cast<Dual>(), G.cast<Dual>(), alpha_n, radius_n,
-                               hk_n, radius_piece(ki), piece(kinematic, kk), plastic);
+                               hk_n, radius_piece(ki), kinematic.piece(kk), plastic);
   J2FiniteKinematicResult out;
   for (int i = 0; i < 6; ++i) {
     out.stress[i] = r.stress[i].value();

@@ -6,40 +6,9 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "material/symmetric_voigt.hpp"
 
 namespace kontakt::material {
-
-namespace {
-
-Vec6 deviator(const Vec6& t) {
-  Vec6 d = t;
-  const Real mean = (t(0) + t(1) + t(2)) / 3.0;
-  d.head<3>().array() -= mean;
-  return d;
-}
-
-Real tensor_norm(const Vec6& t) {
-  return std::sqrt(t.head<3>().squaredNorm() + 2.0 * t.tail<3>().squaredNorm());
-}
-
-/// Linear piece k of a table (k = last row: constant tail).
-struct Piece {
-  Real value_at_start;  // table value at `start`
-  Real start;           // plastic strain where the piece begins
-  Real slope;
-  Real end;             // next breakpoint (infinity for the tail)
-  Real at(Real alpha) const { return value_at_start + slope * (alpha - start); }
-};
-
-Piece piece(const HardeningTable& t, std::size_t k) {
-  const auto& p = t.points;
-  if (k + 1 >= p.size())
-    return {p.back().first, p.back().second, 0.0, std::numeric_limits<Real>::infinity()};
-  return {p[k].first, p[k].second, (p[k + 1].first - p[k].first) / (p[k + 1].second - p[k].second),
-          p[k + 1].second};
-}
-
-}  // namespace
 
 J2KinematicResult j2_kinematic_return_map(Real young, Real poisson, const HardeningTable& kinematic,
                                           const HardeningTable* cyclic,
@@ -83,16 +52,16 @@ J2KinematicResult j2_kinematic_return_map(Real young, Real poisson, const Harden
   std::size_t kk = kinematic.segment(alpha_n);
   std::size_t ki = cyclic ? cyclic->segment(alpha_n) : 0;
   auto radius_piece = [&](std::size_t k) {
-    if (cyclic) return piece(*cyclic, k);
-    return Piece{radius_n, 0.0, 0.0, std::numeric_limits<Real>::infinity()};
+    if (cyclic) return cyclic->piece(k);
+    return HardeningPiece{radius_n, 0.0, 0.0};
   };
   const Real scale = std::max(q_trial, radius_n);
   const std::size_t max_iter = kinematic.points.size() + (cyclic ? cyclic->points.size() : 0) + 20;
   Real dg = 0.0;
   bool converged = false;
   for (std::size_t it = 0; it < max_iter; ++it) {
-    const Piece pk = piece(kinematic, kk);
-    const Piece pi = radius_piece(ki);
+    const HardeningPiece pk = kinematic.piece(kk);
+    const HardeningPiece pi = radius_piece(ki);
     const Real denom = 3.0 * mu + pk.slope + pi.slope;
     if (!(denom > 0.0))
       throw std::invalid_argument(
@@ -113,8 +82,8 @@ J2KinematicResult j2_kinematic_return_map(Real young, Real poisson, const Harden
     }
     dg = next;
   }
-  const Piece pk = piece(kinematic, kk);
-  const Piece pi = radius_piece(ki);
+  const HardeningPiece pk = kinematic.piece(kk);
+  const HardeningPiece pi = radius_piece(ki);
   if (!converged) {
     const Real a = alpha_n + dg;
     const Real r = q_trial - 3.0 * mu * dg - (pk.at(a) - hk_n) - pi.at(a);

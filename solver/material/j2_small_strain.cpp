@@ -4,26 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "material/symmetric_voigt.hpp"
+
 namespace kontakt::material {
 
 namespace {
 
 constexpr int kShear0 = 3;  // first shear slot in Voigt order
-
-/// Deviator of a tensor-shear Voigt vector.
-Vec6 deviator(const Vec6& t) {
-  Vec6 d = t;
-  const Real mean = (t(0) + t(1) + t(2)) / 3.0;
-  d(0) -= mean;
-  d(1) -= mean;
-  d(2) -= mean;
-  return d;
-}
-
-/// Frobenius norm of a symmetric tensor stored in Voigt form with tensor shear.
-Real tensor_norm(const Vec6& t) {
-  return std::sqrt(t.head<3>().squaredNorm() + 2.0 * t.tail<3>().squaredNorm());
-}
 
 }  // namespace
 

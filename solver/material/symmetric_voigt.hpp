@@ -1,6 +1,8 @@
-// Symmetric 3x3 tensors in Voigt order xx yy zz xy xz yz, as the finite-strain material
-// kernels (J2 at finite strain, hyperelastic) use them.
+// Symmetric 3x3 tensors in Voigt order xx yy zz xy xz yz with tensor (not engineering) shear,
+// as the material kernels use them.
 #pragma once
+
+#include <cmath>
 
 #include "core/types.hpp"
 
@@ -14,6 +16,19 @@ inline Vec6 voigt(const Mat3& t) {
   Vec6 v;
   for (int a = 0; a < 6; ++a) v[a] = t(kVoigtI[a], kVoigtJ[a]);
   return v;
+}
+
+/// Deviatoric part.
+inline Vec6 deviator(const Vec6& t) {
+  Vec6 d = t;
+  const Real mean = (t(0) + t(1) + t(2)) / 3.0;
+  d.head<3>().array() -= mean;
+  return d;
+}
+
+/// Frobenius norm (the shear entries count twice).
+inline Real tensor_norm(const Vec6& t) {
+  return std::sqrt(t.head<3>().squaredNorm() + 2.0 * t.tail<3>().squaredNorm());
 }
 
 /// Components (ij, kl) of d(C^-1)/dC = -(Ci_ik Ci_jl + Ci_il Ci_jk) / 2 for symmetric C, Ci

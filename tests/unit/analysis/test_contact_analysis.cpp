@@ -4,19 +4,15 @@
 
 #include <cmath>
 
-#include "analysis/nonlinear_static.hpp"
 #include "../contact/two_blocks.hpp"
+#include "analysis/nonlinear_static.hpp"
+#include "collect_results.hpp"
 
 using namespace kontakt;
 
 namespace {
 
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  std::vector<analysis::Event> events;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event& e) override { events.push_back(e); }
-};
+using testing_decks::Collect;
 
 struct PatchResult {
   Real szz_min = 1e300, szz_max = -1e300, cpress_min = 1e300, cpress_max = -1e300;

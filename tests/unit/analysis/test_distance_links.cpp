@@ -7,12 +7,15 @@
 
 #include "analysis/distance_links.hpp"
 #include "analysis/nonlinear_static.hpp"
+#include "collect_results.hpp"
 #include "cube_deck.hpp"
 #include "inp/read_deck.hpp"
 
 using namespace kontakt;
 
 namespace {
+
+using testing_decks::Collect;
 
 /// The unit cube on rollers, its corner node 7 (1, 1, 1) tethered to node 1 (0, 0, 0), which
 /// the rollers hold, by a DIST of at most `limit` (node 9's x); `step` appended.
@@ -29,12 +32,6 @@ VecX moved_corner(const model::Model& m, const Vec3& u7) {
   u.segment<3>(3 * m.mesh.node_index.at(7)) = u7;
   return u;
 }
-
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event&) override {}
-};
 
 }  // namespace
 

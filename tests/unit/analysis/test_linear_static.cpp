@@ -4,12 +4,15 @@
 #include <string>
 
 #include "analysis/linear_static.hpp"
+#include "collect_results.hpp"
 #include "cube_deck.hpp"
 #include "inp/read_deck.hpp"
 
 using namespace kontakt;
 
 namespace {
+
+using testing_decks::Collect;
 
 /// The unit cube with E = 1000, nu = 0.25, alpha = 1e-5; `rest` is appended.
 std::string cube_deck(const std::string& rest) {
@@ -18,14 +21,7 @@ std::string cube_deck(const std::string& rest) {
 
 using testing_decks::kRollers;
 
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  std::vector<analysis::Event> events;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event& e) override { events.push_back(e); }
-};
-
-Collect solve(const std::string& deck, int threads = 1) {
+Collect solve_linear(const std::string& deck, int threads = 1) {
   const model::Model m = inp::read_deck_text(deck, "cube.inp");
   Collect c;
   analysis::run_linear_static(m, {.threads = threads}, c, c);
@@ -36,7 +32,7 @@ Collect solve(const std::string& deck, int threads = 1) {
 
 TEST(LinearStatic, UniaxialTensionGivesExactStressStrainAndReactions) {
   // Total force 10 on the x = 1 face of a unit cube: sigma_xx = 10, eps_xx = 0.01.
-  const auto c = solve(cube_deck(std::string(kRollers) + R"(*STEP
+  const auto c = solve_linear(cube_deck(std::string(kRollers) + R"(*STEP
 *STATIC
 *CLOAD
 X1, 1, 2.5
@@ -59,7 +55,7 @@ X1, 1, 2.5
 }
 
 TEST(LinearStatic, FreeThermalExpansionIsStressFree) {
-  const auto c = solve(cube_deck(std::string(kRollers) + R"(*INITIAL CONDITIONS, TYPE=TEMPERATURE
+  const auto c = solve_linear(cube_deck(std::string(kRollers) + R"(*INITIAL CONDITIONS, TYPE=TEMPERATURE
 NALL, 20
 *STEP
 *STATIC
@@ -76,7 +72,7 @@ NALL, 120
 
 TEST(LinearStatic, PrescribedDisplacementAndEquationTie) {
   // Pull the x = 1 face by 0.02 through node 2 alone; nodes 3, 6, 7 follow by *EQUATION.
-  const auto c = solve(cube_deck(std::string(kRollers) + R"(*EQUATION
+  const auto c = solve_linear(cube_deck(std::string(kRollers) + R"(*EQUATION
 2
 3, 1, 1.0, 2, 1, -1.0
 2
@@ -95,7 +91,7 @@ TEST(LinearStatic, PrescribedDisplacementAndEquationTie) {
 }
 
 TEST(LinearStatic, LaterStepsReuseTheFactorisationAndScaleLinearly) {
-  const auto c = solve(cube_deck(std::string(kRollers) + R"(*STEP
+  const auto c = solve_linear(cube_deck(std::string(kRollers) + R"(*STEP
 *STATIC
 *CLOAD
 X1, 1, 1.0
@@ -113,7 +109,7 @@ X1, 1, 3.0
 
 TEST(LinearStatic, UnsupportedBodyIsReportedWithANode) {
   try {
-    solve(cube_deck(R"(*STEP
+    solve_linear(cube_deck(R"(*STEP
 *STATIC
 *CLOAD
 2, 1, 1.0
@@ -129,7 +125,7 @@ TEST(LinearStatic, UnsupportedBodyIsReportedWithANode) {
 TEST(LinearStatic, MechanismIsReportedNotSolved) {
   // Every body is held in x, y and z somewhere, but rotation about x is free.
   try {
-    solve(cube_deck(R"(*BOUNDARY
+    solve_linear(cube_deck(R"(*BOUNDARY
 1, 1, 3
 2, 1
 *STEP
@@ -174,14 +170,14 @@ TEST(LinearStatic, ResultsDoNotDependOnThreadCount) {
 52, 3, -1.0
 *END STEP
 )";
-  const auto one = solve(mesh, 1), two = solve(mesh, 2);
+  const auto one = solve_linear(mesh, 1), two = solve_linear(mesh, 2);
   EXPECT_EQ((one.frames[0].U - two.frames[0].U).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((one.frames[0].S - two.frames[0].S).cwiseAbs().maxCoeff(), 0.0);
 }
 
 TEST(LinearStatic, BoundaryFixedHoldsThePreviousStepsDisplacement) {
   // Step 1 pulls the x = 1 face; step 2 removes the load but FIXED holds node 2 where it was.
-  const auto c = solve(cube_deck(std::string(kRollers) + R"(*STEP
+  const auto c = solve_linear(cube_deck(std::string(kRollers) + R"(*STEP
 *STATIC
 *CLOAD
 X1, 1, 2.5
@@ -201,7 +197,7 @@ X1, 1, 2.5
 TEST(LinearStatic, EveryDofPrescribedIsSolvedWithoutEquations) {
   // Issue 10: no free equation left (ccx solves this and prints the reactions); this crashed.
   // Uniaxial strain 0.01: sigma_xx = (lambda + 2 mu) eps = 12, sigma_yy = sigma_zz = 4.
-  const auto c = solve(cube_deck(R"(*BOUNDARY
+  const auto c = solve_linear(cube_deck(R"(*BOUNDARY
 X0, 1, 3
 X1, 2, 3
 X1, 1, 1, 0.01

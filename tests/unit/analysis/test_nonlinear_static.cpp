@@ -5,6 +5,7 @@
 #include <string>
 
 #include "analysis/nonlinear_static.hpp"
+#include "collect_results.hpp"
 #include "cube_deck.hpp"
 #include "inp/read_deck.hpp"
 
@@ -12,17 +13,12 @@ using namespace kontakt;
 
 namespace {
 
+using testing_decks::Collect;
+
 /// The unit cube with E = 1000, nu = 0.25 on symmetry rollers; `rest` appended.
 std::string cube(const std::string& rest) {
   return testing_decks::cube_model("*ELASTIC\n1000, 0.25\n") + testing_decks::kRollers + rest;
 }
-
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  std::vector<analysis::Event> events;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event& e) override { events.push_back(e); }
-};
 
 /// Controls tight enough that comparisons with closed forms see the model, not ccx's default
 /// residual tolerance of 0.5 %.

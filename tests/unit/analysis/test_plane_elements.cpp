@@ -15,6 +15,7 @@
 
 #include "analysis/linear_static.hpp"
 #include "analysis/nonlinear_static.hpp"
+#include "collect_results.hpp"
 #include "contact/tie_constraints.hpp"
 #include "inp/read_deck.hpp"
 #include "model/plane_expansion.hpp"
@@ -23,14 +24,10 @@ using namespace kontakt;
 
 namespace {
 
+using testing_decks::Collect;
+
 constexpr Real kE = 1000, kNu = 0.3;
 constexpr Real kA = 1e-3, kB = -2e-3, kC = 5e-4, kD = 1.5e-3;  // the linear field's slopes
-
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event&) override {}
-};
 
 /// Corner grid 3 x 3 over [x0, x0 + 2] x [0, 2] with the centre node moved off the middle;
 /// `quadratic` adds midside nodes, `triangles` splits every quad along its 1-3 diagonal.

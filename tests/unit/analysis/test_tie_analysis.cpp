@@ -5,17 +5,14 @@
 #include "../contact/two_blocks.hpp"
 #include "analysis/linear_static.hpp"
 #include "analysis/nonlinear_static.hpp"
+#include "collect_results.hpp"
 #include "contact/tie_constraints.hpp"
 
 using namespace kontakt;
 
 namespace {
 
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event&) override {}
-};
+using testing_decks::Collect;
 
 /// The two blocks bonded by a *TIE (upper bottom on lower top), set up as run_job does.
 model::Model tied(const contact::fixtures::TwoBlocks& t) {

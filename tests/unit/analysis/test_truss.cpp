@@ -13,12 +13,15 @@
 #include "analysis/connector.hpp"
 #include "analysis/nonlinear_static.hpp"
 #include "analysis/truss.hpp"
+#include "collect_results.hpp"
 #include "inp/read_deck.hpp"
 
 using namespace kontakt;
 using analysis::connector_response;
 
 namespace {
+
+using testing_decks::Collect;
 
 model::Connector truss() {
   model::Connector c;
@@ -150,13 +153,6 @@ TEST(Truss, NlgeomPointsPrintCauchyStressOverTheShrunkSection) {
 }
 
 namespace {
-
-struct Collect : analysis::FrameSink, analysis::EventSink {
-  std::vector<output::Frame> frames;
-  std::vector<analysis::Event> events;
-  void on_frame(const model::Step&, const output::Frame& f) override { frames.push_back(f); }
-  void on_event(const analysis::Event& e) override { events.push_back(e); }
-};
 
 /// ccx's truss.inp: two bars at 45 degrees in the x-z plane pinned at their far ends, pulled
 /// at their joint along x; `load` replaces that *CLOAD line.

@@ -22,6 +22,9 @@ struct Recorder final : analysis::EventSink {
   void on_event(const analysis::Event& e) override { events.push_back(e); }
 };
 
+}  // namespace
+
+// Outside the anonymous namespace: the tests derived from it are not in it.
 class RunJobTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -43,8 +46,6 @@ class RunJobTest : public ::testing::Test {
   fs::path dir;
   std::atomic<bool> no_cancel{false};
 };
-
-}  // namespace
 
 TEST_F(RunJobTest, ConvergedRunWritesEveryResultFileAndEndsWithDone) {
   Recorder sink;

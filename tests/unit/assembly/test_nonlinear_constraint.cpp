@@ -50,6 +50,16 @@ std::vector<model::NonlinearConstraint> every_kind() {
           constraint(Kind::MeanRotation, {8, 9, 10, 11, 13}, 2), distance_5_0()};
 }
 
+/// An *EQUATION of the deck on `line` (built member by member: GCC 12 misreads the aggregate
+/// temporary's string as uninitialised once this file is compiled with others, a unity build).
+model::Equation equation(std::vector<model::EquationTerm> terms, int line) {
+  model::Equation e;
+  e.terms = std::move(terms);
+  e.where.file = "deck.inp";
+  e.where.line = line;
+  return e;
+}
+
 VecX random_displacements(int n_nodes, Real size, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<Real> d(-size, size);
@@ -160,8 +170,8 @@ TEST(DofMap, RelinearisedConstraintsHoldExactlyAndTheirRowsAreTheDerivatives) {
   m.nonlinear_constraints.push_back(distance_5_0());  // quadratic in its dependent dof
   // Equations that follow the constraints (as the copies of a 2D node on a rigid body do),
   // one through the other: 3y = 0.5 8x + 0.25 2y, then 4z = 2 3y - 9z + 1.5 6x.
-  m.equations.push_back({{{3, 1, 1.0}, {8, 0, -0.5}, {2, 1, -0.25}}, {"deck.inp", 9}});
-  m.equations.push_back({{{4, 2, 1.0}, {3, 1, -2.0}, {9, 2, 1.0}, {6, 0, -1.5}}, {"deck.inp", 10}});
+  m.equations.push_back(equation({{3, 1, 1.0}, {8, 0, -0.5}, {2, 1, -0.25}}, 9));
+  m.equations.push_back(equation({{4, 2, 1.0}, {3, 1, -2.0}, {9, 2, 1.0}, {6, 0, -1.5}}, 10));
   assembly::DofMap dofs(m, {{0, 0, 0}, {0, 1, 0}, {0, 2, 0}});
   ASSERT_TRUE(dofs.has_nonlinear_constraints());
   VecX u = random_displacements(14, 0.3, 5);

@@ -11,8 +11,10 @@
 #include "material/j2_finite_kinematic.hpp"
 #include "material/j2_finite_strain.hpp"
 #include "material/j2_kinematic.hpp"
+#include "material/symmetric_voigt.hpp"
 
-namespace kontakt::material {
+// A namespace of its own: the helpers' names recur in the other material tests.
+namespace kontakt::material::test_j2_finite_kinematic {
 namespace {
 
 constexpr Real kE = 210000.0;
@@ -42,12 +44,6 @@ Mat3 perturbed(const Mat3& C, int j, Real h) {
     c(kJ[j], kI[j]) += h;
   }
   return c;
-}
-
-Vec6 deviator(const Vec6& t) {
-  Vec6 d = t;
-  d.head<3>().array() -= t.head<3>().mean();
-  return d;
 }
 
 /// Cauchy xx minus yy stress of S at F: the signed von Mises stress of an axisymmetric state.
@@ -150,4 +146,4 @@ TEST(J2FiniteKinematic, TangentIsTheDerivativeOfTheStress) {
 }
 
 }  // namespace
-}  // namespace kontakt::material
+}  // namespace kontakt::material::test_j2_finite_kinematic

@@ -11,7 +11,8 @@
 
 #include "core/error.hpp"
 
-namespace kontakt::material {
+// A namespace of its own: the helpers' names recur in the other material tests.
+namespace kontakt::material::test_j2_finite_strain {
 namespace {
 
 constexpr Real kE = 210000.0;
@@ -231,4 +232,4 @@ TEST(J2FiniteStrain, RejectsAnInvertedDeformation) {
 }
 
 }  // namespace
-}  // namespace kontakt::material
+}  // namespace kontakt::material::test_j2_finite_strain

@@ -8,7 +8,8 @@
 #include <cmath>
 #include <vector>
 
-namespace kontakt::material {
+// A namespace of its own: the helpers' names recur in the other material tests.
+namespace kontakt::material::test_j2_kinematic {
 namespace {
 
 constexpr Real kE = 200000.0;
@@ -246,4 +247,4 @@ TEST(J2Kinematic, UnloadingIsElasticAndKeepsInternalVariables) {
 }
 
 }  // namespace
-}  // namespace kontakt::material
+}  // namespace kontakt::material::test_j2_kinematic

@@ -10,7 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-namespace kontakt::material {
+// A namespace of its own: the helpers' names recur in the other material tests.
+namespace kontakt::material::test_j2_small_strain {
 namespace {
 
 constexpr Real kE = 200000.0;
@@ -406,4 +407,4 @@ TEST(J2SmallStrain, TaylorRemainderAndNewtonConvergeQuadratically) {
 }
 
 }  // namespace
-}  // namespace kontakt::material
+}  // namespace kontakt::material::test_j2_small_strain

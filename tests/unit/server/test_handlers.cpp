@@ -10,8 +10,7 @@ using nlohmann::json;
 
 namespace kontakt::server {
 
-namespace {
-
+// Outside the anonymous namespace: the tests derived from it are not in it.
 class HandlerTest : public ::testing::Test {
  protected:
   testing::TempDir dir;
@@ -41,6 +40,8 @@ class HandlerTest : public ::testing::Test {
   }
   static json body(const HttpResponse& r) { return json::parse(r.body); }
 };
+
+namespace {
 
 /// The cube deck with line `line` (1-based) replaced.
 std::string cube_with_line(int line, const std::string& text) {

@@ -25,13 +25,14 @@ NewJob new_job(const std::string& name, std::optional<std::string> key = std::nu
   return job;
 }
 
+}  // namespace
+
+// Outside the anonymous namespace: the tests derived from it are not in it.
 class JobStoreTest : public ::testing::Test {
  protected:
   testing::TempDir dir;
   JobStore store{dir.path() / "jobs.db"};
 };
-
-}  // namespace
 
 TEST_F(JobStoreTest, InsertedJobIsQueuedWithAStatusEvent) {
   const auto [result, job] = store.insert_job(new_job("a"));
