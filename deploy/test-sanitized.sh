@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${KONTAKT_SANITIZED_BUILD:-build-sanitized}
-cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Sanitized \
+cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Sanitized -DCMAKE_UNITY_BUILD=ON \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_C_FLAGS_SANITIZED="${KONTAKT_SANITIZED_FLAGS:--O0 -g1}" \
   -DCMAKE_CXX_FLAGS_SANITIZED="${KONTAKT_SANITIZED_FLAGS:--O0 -g1}" \
