@@ -1,6 +1,7 @@
 #include "nonlinear/pseudo_transient.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace kontakt::nonlinear {
 
@@ -9,6 +10,7 @@ void PseudoTransient::start(Real held_energy) {
   shift_ = kFirstShift;
   residual_ = 0;
   steps_ = 0;
+  best_residual_ = std::numeric_limits<Real>::infinity();
   steps_since_best_ = 0;
   held_energy_ = held_energy;
   dissipated_ = 0;
@@ -23,7 +25,7 @@ bool PseudoTransient::raise() {
 void PseudoTransient::stepped(Real residual, Real dissipated) {
   ++steps_;
   dissipated_ += dissipated;
-  if (steps_ == 1 || residual < best_residual_) {
+  if (residual < best_residual_) {
     best_residual_ = residual;
     steps_since_best_ = 0;
   } else {

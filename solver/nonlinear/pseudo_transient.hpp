@@ -58,7 +58,7 @@ class PseudoTransient {
   Real shift_ = 0;
   Real residual_ = 0;  ///< norm before the next step
   int steps_ = 0;
-  Real best_residual_ = 0;
+  Real best_residual_ = 0;  ///< smallest residual since start()
   int steps_since_best_ = 0;
   Real held_energy_ = 0;
   Real dissipated_ = 0;
